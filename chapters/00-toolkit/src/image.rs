@@ -1,0 +1,109 @@
+//! The image buffer: linear RGB pixels, rendered in parallel, written as PNG.
+
+use std::io::Write;
+use std::path::Path;
+
+use rayon::prelude::*;
+
+use crate::{Color, Stats};
+
+/// A picture in linear RGB, row by row from the top left.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<Color>,
+}
+
+impl Image {
+    /// Computes every pixel with `pixel(x, y, stats)`, rows in parallel.
+    ///
+    /// Each pixel depends only on its own (x, y), so the picture is the same
+    /// bytes whatever the number of threads; the statistics are sums of
+    /// per-row counts, which do not depend on the order either. `on_row` is
+    /// called once per finished row (for a progress bar).
+    pub fn render(
+        width: u32,
+        height: u32,
+        pixel: impl Fn(u32, u32, &mut Stats) -> Color + Sync,
+        on_row: impl Fn() + Sync,
+    ) -> (Image, Stats) {
+        let mut pixels = vec![Color::ZERO; width as usize * height as usize];
+        let stats = pixels
+            .par_chunks_mut(width as usize)
+            .enumerate()
+            .map(|(y, row)| {
+                let mut stats = Stats::default();
+                for (x, out) in row.iter_mut().enumerate() {
+                    *out = pixel(x as u32, y as u32, &mut stats);
+                }
+                on_row();
+                stats
+            })
+            .reduce(Stats::default, |a, b| a + b);
+        let image = Image {
+            width,
+            height,
+            pixels,
+        };
+        (image, stats)
+    }
+
+    /// The pixel at (x, y).
+    pub fn get(&self, x: u32, y: u32) -> Color {
+        self.pixels[(y * self.width + x) as usize]
+    }
+
+    /// Clamps each channel to [0, 1] and maps it linearly to 0..=255.
+    ///
+    /// The transfer function is the identity: a stored byte b means the linear
+    /// value b/255. No sRGB curve is applied, so pixel values read straight
+    /// off the lecture's formulas (half the light gives half the byte).
+    pub fn to_rgb8(&self) -> ::image::RgbImage {
+        let bytes = self
+            .pixels
+            .iter()
+            .flat_map(|c| c.to_array())
+            .map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
+            .collect();
+        ::image::RgbImage::from_raw(self.width, self.height, bytes).expect("buffer size")
+    }
+
+    /// The picture encoded as PNG bytes.
+    pub fn to_png(&self) -> Vec<u8> {
+        encode_png(&self.to_rgb8())
+    }
+
+    /// Writes a PNG atomically (see [`write_atomically`]).
+    pub fn save_png(&self, path: &Path) -> std::io::Result<()> {
+        write_atomically(path, &self.to_png())
+    }
+}
+
+/// Encodes an 8-bit RGB image as PNG.
+pub fn encode_png(image: &::image::RgbImage) -> Vec<u8> {
+    let mut bytes = Vec::new();
+    image
+        .write_to(
+            &mut std::io::Cursor::new(&mut bytes),
+            ::image::ImageFormat::Png,
+        )
+        .expect("encoding a PNG in memory cannot fail");
+    bytes
+}
+
+/// Writes `bytes` to a temporary file beside `path`, then renames it into
+/// place: a reader sees the old file or the new one, never half of one, and an
+/// interrupted render leaves the old picture intact.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    std::fs::create_dir_all(dir)?;
+    let mut file = tempfile::NamedTempFile::new_in(dir)?;
+    file.write_all(bytes)?;
+    file.as_file().sync_all()?;
+    file.persist(path).map_err(|e| e.error)?;
+    Ok(())
+}

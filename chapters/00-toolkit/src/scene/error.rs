@@ -1,0 +1,94 @@
+//! Errors in scene files: file, line, field path, what is wrong, what is valid.
+
+use std::fmt;
+use std::ops::Range;
+
+/// A scene file that cannot be used, and where exactly.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneError {
+    /// The file as the user named it.
+    pub file: String,
+    /// 1-based line and column, when the problem has a place in the text.
+    pub line: Option<usize>,
+    pub column: Option<usize>,
+    /// Field path such as `objects[3].radius`; empty for the whole file.
+    pub path: String,
+    /// What is wrong and what would be valid.
+    pub message: String,
+    /// The offending source line, for display.
+    pub source_line: Option<String>,
+}
+
+impl SceneError {
+    /// An error at a place in the text.
+    pub(crate) fn at(
+        file: &str,
+        text: &str,
+        span: Option<Range<usize>>,
+        path: &str,
+        message: impl Into<String>,
+    ) -> SceneError {
+        let (line, column, source_line) = match span {
+            Some(span) => {
+                let (line, column) = line_and_column(text, span.start);
+                let source_line = text.lines().nth(line - 1).map(str::to_owned);
+                (Some(line), Some(column), source_line)
+            }
+            None => (None, None, None),
+        };
+        SceneError {
+            file: file.to_owned(),
+            line,
+            column,
+            path: path.to_owned(),
+            message: message.into(),
+            source_line,
+        }
+    }
+
+    /// A file that cannot be read at all.
+    pub(crate) fn io(file: &str, error: &std::io::Error) -> SceneError {
+        SceneError::at(
+            file,
+            "",
+            None,
+            "",
+            format!("cannot read the scene file: {error}"),
+        )
+    }
+}
+
+/// 1-based line and column (in characters) of a byte offset.
+fn line_and_column(text: &str, offset: usize) -> (usize, usize) {
+    let offset = offset.min(text.len());
+    let before = text.get(..offset).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let column = before[line_start..].chars().count() + 1;
+    (line, column)
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.file)?;
+        if let (Some(line), Some(column)) = (self.line, self.column) {
+            write!(f, ":{line}:{column}")?;
+        }
+        if !self.path.is_empty() {
+            write!(f, ": {}", self.path)?;
+        }
+        write!(f, ": {}", self.message)?;
+        if let (Some(line), Some(column), Some(text)) = (self.line, self.column, &self.source_line)
+        {
+            let gutter = line.to_string().len();
+            write!(
+                f,
+                "\n{:gutter$} |\n{line} | {text}\n{:gutter$} | {:>column$}",
+                "", "", "^"
+            )?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for SceneError {}

@@ -1,0 +1,174 @@
+//! The scene: what a scene file describes, checked and ready to render.
+//!
+//! Every chapter reads the same format (see `file.rs` for the TOML side). A
+//! chapter that cannot simulate something yet still reads it; it simply does
+//! not use it. Everything here has been validated: finite numbers, unit
+//! normals, positive radii, triangles with area, known material names.
+
+mod error;
+mod file;
+
+use std::path::Path;
+
+pub use error::SceneError;
+use glam::Vec3;
+
+use crate::Color;
+
+/// A complete, validated scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    pub camera: CameraSpec,
+    pub image: ImageSpec,
+    pub trace: TraceSpec,
+    /// Materials in the order of their names; objects refer to them by index.
+    pub materials: Vec<Material>,
+    pub lights: Vec<Light>,
+    pub objects: Vec<Object>,
+}
+
+/// Where the eye is and where it looks (chapter 1's pinhole camera).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CameraSpec {
+    pub eye: Vec3,
+    pub look_at: Vec3,
+    /// Unit vector, not parallel to `look_at - eye`.
+    pub up: Vec3,
+    /// Vertical field of view in degrees, in (0, 180).
+    pub vfov_degrees: f32,
+}
+
+/// The picture to make.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImageSpec {
+    pub width: u32,
+    pub height: u32,
+    /// The colour of a ray that hits nothing.
+    pub background: Color,
+}
+
+/// Chapter 7's termination criteria and the effects switched on.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TraceSpec {
+    /// A path ends after this many bounces.
+    pub max_depth: u32,
+    /// A path ends when the product of its weights falls below this.
+    pub min_weight: f32,
+    /// `None`: every effect the scene calls for; `Some`: only these.
+    pub effects: Option<Vec<Effect>>,
+}
+
+/// The effects a tracer can simulate, each introduced by one chapter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Effect {
+    Lambert,
+    Spot,
+    Shadows,
+    Reflection,
+    Refraction,
+}
+
+/// How a surface answers light.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Material {
+    pub name: String,
+    /// Diffuse albedo per channel, in [0, 1] (chapter 3).
+    pub color: Color,
+    /// Mirror weight per channel, in [0, 1] (chapter 5).
+    pub reflectance: Color,
+    /// Weight of the highlight of point lights, in [0, 1] (chapter 5).
+    pub specular: f32,
+    /// Exponent of the highlight: larger is sharper (chapter 5).
+    pub shininess: f32,
+    /// Weight of the transmitted ray, in [0, 1] (chapter 6).
+    pub transparency: f32,
+    /// Index of refraction, > 0 (chapter 6).
+    pub ior: f32,
+    /// Use Schlick's Fresnel term to split reflection and refraction (chapter 6).
+    pub fresnel: bool,
+}
+
+/// Index into [`Scene::materials`].
+pub type MaterialId = usize;
+
+/// A light source (chapter 3).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Light {
+    /// Constant light, equal everywhere, never blocked.
+    Ambient { color: Color },
+    /// Light from a point, falling off with 1/r².
+    Point {
+        position: Vec3,
+        color: Color,
+        intensity: f32,
+        /// Does this light cast shadows (chapter 4)?
+        shadows: bool,
+    },
+    /// A point light limited to a cone around `direction`, with a smooth
+    /// edge between the inner and the outer half-angle.
+    Spot {
+        position: Vec3,
+        /// Unit vector: the axis of the cone.
+        direction: Vec3,
+        color: Color,
+        intensity: f32,
+        inner_degrees: f32,
+        outer_degrees: f32,
+        shadows: bool,
+    },
+}
+
+/// A shape with its material.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Object {
+    pub shape: Shape,
+    pub material: MaterialId,
+    /// Does this object block shadow rays (chapter 4)?
+    pub shadows: bool,
+}
+
+/// The geometric primitives of chapter 2.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    Sphere {
+        center: Vec3,
+        radius: f32,
+    },
+    /// The points x with n·x + d = 0; `normal` is a unit vector.
+    Plane {
+        normal: Vec3,
+        offset: f32,
+    },
+    /// Three corners, counter-clockwise seen from the front; never degenerate.
+    Triangle {
+        vertices: [Vec3; 3],
+    },
+}
+
+impl Scene {
+    /// Reads and validates a scene file.
+    pub fn load(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
+        let path = path.as_ref();
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::io(&name, &e))?;
+        Scene::parse(&text, &name)
+    }
+
+    /// Parses and validates scene text; `file_name` is used in error messages.
+    pub fn parse(text: &str, file_name: &str) -> Result<Scene, SceneError> {
+        file::parse(text, file_name)
+    }
+
+    /// The material of an object.
+    pub fn material(&self, object: &Object) -> &Material {
+        &self.materials[object.material]
+    }
+
+    /// The same scene at another image size (tests render small).
+    pub fn with_size(mut self, width: u32, height: u32) -> Scene {
+        self.image.width = width;
+        self.image.height = height;
+        self
+    }
+}
