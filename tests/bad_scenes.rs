@@ -55,13 +55,13 @@ fn broken(from: &str, to: &str) -> SceneError {
 }
 
 /// The line (1-based) of the first occurrence of `needle` after `from` is replaced.
-fn line_of(needle: &str, from: &str, to: &str) -> usize {
+fn line_of(needle: &str, from: &str, to: &str) -> u32 {
     let text = GOOD.replacen(from, to, 1);
     let offset = text.find(needle).expect("needle in scene");
-    text[..offset].matches('\n').count() + 1
+    text[..offset].matches('\n').count() as u32 + 1
 }
 
-fn assert_error(e: &SceneError, line: usize, path: &str, words: &[&str]) {
+fn assert_error(e: &SceneError, line: u32, path: &str, words: &[&str]) {
     assert_eq!(e.file, "bad.toml");
     assert_eq!(e.line, Some(line), "line of: {e}");
     assert_eq!(e.path, path, "path of: {e}");

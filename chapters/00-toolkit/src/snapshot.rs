@@ -19,7 +19,8 @@ use crate::image::{encode_png, write_atomically};
 
 /// The workspace root (this crate lives in `chapters/00-toolkit`).
 pub fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    root.canonicalize().unwrap_or(root)
 }
 
 /// Where a chapter's references are kept.
@@ -65,9 +66,9 @@ pub fn assert_image(chapter: &str, name: &str, image: &Image) {
     });
 }
 
-/// Compares with the reference; on failure writes the actual and diff
-/// pictures and returns a report naming them.
-fn check(
+/// Compares with the reference PNG; on failure writes the actual and diff
+/// pictures to [`failure_dir`] and returns a report naming them.
+pub fn check(
     chapter: &str,
     name: &str,
     reference: &[u8],

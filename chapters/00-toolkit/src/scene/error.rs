@@ -9,8 +9,8 @@ pub struct SceneError {
     /// The file as the user named it.
     pub file: String,
     /// 1-based line and column, when the problem has a place in the text.
-    pub line: Option<usize>,
-    pub column: Option<usize>,
+    pub line: Option<u32>,
+    pub column: Option<u32>,
     /// Field path such as `objects[3].radius`; empty for the whole file.
     pub path: String,
     /// What is wrong and what would be valid.
@@ -31,7 +31,7 @@ impl SceneError {
         let (line, column, source_line) = match span {
             Some(span) => {
                 let (line, column) = line_and_column(text, span.start);
-                let source_line = text.lines().nth(line - 1).map(str::to_owned);
+                let source_line = text.lines().nth(line as usize - 1).map(str::to_owned);
                 (Some(line), Some(column), source_line)
             }
             None => (None, None, None),
@@ -59,13 +59,13 @@ impl SceneError {
 }
 
 /// 1-based line and column (in characters) of a byte offset.
-fn line_and_column(text: &str, offset: usize) -> (usize, usize) {
+fn line_and_column(text: &str, offset: usize) -> (u32, u32) {
     let offset = offset.min(text.len());
     let before = text.get(..offset).unwrap_or(text);
     let line = before.matches('\n').count() + 1;
     let line_start = before.rfind('\n').map_or(0, |i| i + 1);
     let column = before[line_start..].chars().count() + 1;
-    (line, column)
+    (line as u32, column as u32)
 }
 
 impl fmt::Display for SceneError {
@@ -81,6 +81,7 @@ impl fmt::Display for SceneError {
         if let (Some(line), Some(column), Some(text)) = (self.line, self.column, &self.source_line)
         {
             let gutter = line.to_string().len();
+            let column = column as usize;
             write!(
                 f,
                 "\n{:gutter$} |\n{line} | {text}\n{:gutter$} | {:>column$}",

@@ -1,0 +1,129 @@
+#![doc = include_str!("../README.md")]
+
+pub use ch00_toolkit as toolkit;
+use ch00_toolkit::scene::CameraSpec;
+use ch00_toolkit::{Color, Image, Scene, Stats, Vec3};
+
+/// A ray r(t) = r0 + t·rd with a unit direction, so t is a distance.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ray {
+    /// r0: where the ray starts.
+    pub origin: Vec3,
+    /// rd: where it goes, always of length 1.
+    pub direction: Vec3,
+}
+
+impl Ray {
+    /// A ray from `origin` along `direction` (any non-zero length; it is
+    /// normalised so that `t` measures distance along the ray).
+    pub fn new(origin: Vec3, direction: Vec3) -> Ray {
+        Ray {
+            origin,
+            direction: direction.normalize(),
+        }
+    }
+
+    /// The point r(t) = r0 + t·rd.
+    pub fn at(&self, t: f32) -> Vec3 {
+        self.origin + t * self.direction
+    }
+}
+
+/// A pinhole camera: every ray starts at the eye and passes through one
+/// point of an image plane one unit in front of it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Camera {
+    pub eye: Vec3,
+    /// Unit vectors of the camera: `right` and `up` span the image plane,
+    /// `forward` points from the eye to its centre.
+    pub right: Vec3,
+    pub up: Vec3,
+    pub forward: Vec3,
+    /// Half the width and height of the image plane at distance 1.
+    pub half_width: f32,
+    pub half_height: f32,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl Camera {
+    /// The camera of a scene for an image of `width` × `height` pixels.
+    ///
+    /// forward = normalise(look_at − eye), right = normalise(forward × up),
+    /// up' = right × forward. The vertical field of view gives the plane's
+    /// half height tan(vfov / 2); the aspect ratio gives its half width.
+    pub fn new(spec: &CameraSpec, width: u32, height: u32) -> Camera {
+        let forward = (spec.look_at - spec.eye).normalize();
+        let right = forward.cross(spec.up).normalize();
+        let up = right.cross(forward);
+        let half_height = (spec.vfov_degrees.to_radians() / 2.0).tan();
+        let half_width = half_height * width as f32 / height as f32;
+        Camera {
+            eye: spec.eye,
+            right,
+            up,
+            forward,
+            half_width,
+            half_height,
+            width,
+            height,
+        }
+    }
+
+    /// The ray through image position (px, py), measured in pixels from the
+    /// top-left corner of the image (so the centre of pixel (x, y) is at
+    /// (x + 0.5, y + 0.5)). It is cast backwards: from the eye into the
+    /// scene, the opposite way to the light that makes the picture.
+    pub fn ray_through(&self, px: f32, py: f32) -> Ray {
+        let s = (2.0 * px / self.width as f32 - 1.0) * self.half_width;
+        let t = (1.0 - 2.0 * py / self.height as f32) * self.half_height;
+        Ray::new(self.eye, self.forward + s * self.right + t * self.up)
+    }
+
+    /// The primary ray of pixel (x, y): through the pixel's centre.
+    pub fn primary_ray(&self, x: u32, y: u32) -> Ray {
+        self.ray_through(x as f32 + 0.5, y as f32 + 0.5)
+    }
+}
+
+/// Renders a scene with one primary ray per pixel: `trace` gives the colour
+/// seen along a ray. Every later chapter renders through this function and
+/// only brings a better `trace`.
+pub fn render(
+    scene: &Scene,
+    trace: impl Fn(&Ray, &mut Stats) -> Color + Sync,
+    on_row: impl Fn() + Sync,
+) -> (Image, Stats) {
+    let (width, height) = (scene.image.width, scene.image.height);
+    let camera = Camera::new(&scene.camera, width, height);
+    let pixel = |x, y, stats: &mut Stats| {
+        stats.primary += 1;
+        trace(&camera.primary_ray(x, y), stats)
+    };
+    Image::render(width, height, pixel, on_row)
+}
+
+/// What an empty world looks like: a sky that is white at the horizon and
+/// blue overhead, and a grey ground below, chosen by the ray's direction.
+pub fn sky(ray: &Ray) -> Color {
+    let up = ray.direction.y;
+    if up < 0.0 {
+        return Color::new(0.35, 0.3, 0.25) * (1.0 + up);
+    }
+    let horizon = Color::new(1.0, 1.0, 1.0);
+    let zenith = Color::new(0.3, 0.5, 0.9);
+    horizon.lerp(zenith, up.sqrt())
+}
+
+/// Chapter 1's picture: what the camera sees of an empty world.
+pub fn render_sky(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
+    render(scene, |ray, _| sky(ray), on_row)
+}
+
+/// This chapter, for the command line.
+pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+    folder: "01-rays",
+    title: "rays and a pinhole camera",
+    default_scene_path: "chapters/01-rays/scenes/default.toml",
+    default_scene: include_str!("../scenes/default.toml"),
+};

@@ -1,0 +1,22 @@
+//! Renders what the camera sees of an empty world: one ray per pixel.
+
+use ch01_rays::toolkit::cli::{RenderArgs, run};
+use ch01_rays::{CHAPTER, render_sky};
+use clap::Parser;
+
+/// Chapter 1: rays and a pinhole camera. Casts one ray per pixel, backwards
+/// from the eye, and colours each pixel by the ray's direction (a sky above
+/// the horizon, ground below), so you can see where your rays go.
+#[derive(Parser)]
+#[command(version)]
+struct Args {
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+fn main() -> std::process::ExitCode {
+    let args = Args::parse();
+    run(&CHAPTER, &args.render, |scene, on_row| {
+        render_sky(scene, on_row)
+    })
+}

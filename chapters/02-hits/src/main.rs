@@ -1,0 +1,26 @@
+//! Renders the closest hit of every pixel's ray, flat, as normals or as depth.
+
+use ch02_hits::toolkit::cli::{RenderArgs, run};
+use ch02_hits::{CHAPTER, View, render_hits};
+use clap::Parser;
+
+/// Chapter 2: ray-plane, ray-sphere and ray-triangle intersection. Finds the
+/// closest hit of each pixel's ray and shows it without any light: in its
+/// material's colour, as its normal, or as its distance.
+#[derive(Parser)]
+#[command(version)]
+struct Args {
+    #[command(flatten)]
+    render: RenderArgs,
+
+    /// What to show of each hit.
+    #[arg(long, value_enum, default_value_t)]
+    view: View,
+}
+
+fn main() -> std::process::ExitCode {
+    let args = Args::parse();
+    run(&CHAPTER, &args.render, |scene, on_row| {
+        render_hits(scene, args.view, on_row)
+    })
+}

@@ -1,0 +1,26 @@
+//! Ray–plane intersection.
+
+use crate::Ray;
+use crate::toolkit::Vec3;
+
+/// Where the ray meets the plane n·x + d = 0 (n a unit normal), if at a t in
+/// (t_min, t_max).
+///
+/// Put r(t) = r0 + t·rd into the plane equation: n·r0 + t (n·rd) + d = 0, so
+/// t = −(n·r0 + d) / (n·rd). When n·rd = 0 the ray runs parallel to the plane
+/// and there is no single hit; when n·rd is tiny, t may overflow to infinity,
+/// which is no hit either.
+pub fn intersect_plane(
+    normal: Vec3,
+    offset: f32,
+    ray: &Ray,
+    t_min: f32,
+    t_max: f32,
+) -> Option<f32> {
+    let denominator = normal.dot(ray.direction);
+    if denominator == 0.0 {
+        return None;
+    }
+    let t = -(normal.dot(ray.origin) + offset) / denominator;
+    (t.is_finite() && t > t_min && t < t_max).then_some(t)
+}
