@@ -3,8 +3,17 @@
 //! The tracer is the most advanced chapter's; this crate adds the tools
 //! around it (the `raybook` command line).
 
-pub use ch02_hits as tracer;
-pub use ch02_hits::toolkit;
+/// The complete tracer: the most advanced chapter, and the intersection
+/// routines of chapter 2 that it is built on.
+pub mod tracer {
+    pub use ch02_hits::{
+        hit_at, intersect_plane, intersect_sphere, intersect_triangle, sphere_point, sphere_roots,
+        triangle_normal,
+    };
+    pub use ch04_shadows::*;
+}
+
+pub use ch04_shadows::toolkit;
 
 use toolkit::cli::Chapter;
 use toolkit::{Image, Scene, Stats};
@@ -15,5 +24,5 @@ pub const CHAPTER: Chapter = tracer::CHAPTER;
 
 /// Renders a scene with the complete tracer.
 pub fn render(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
-    tracer::render_hits(scene, tracer::View::Flat, on_row)
+    tracer::render_shadows(scene, tracer::Origin::Offset, on_row)
 }

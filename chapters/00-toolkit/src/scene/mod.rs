@@ -165,6 +165,27 @@ impl Scene {
         &self.materials[object.material]
     }
 
+    /// The same scene moved by `offset`: camera, lights and objects.
+    pub fn translated(mut self, offset: Vec3) -> Scene {
+        self.camera.eye += offset;
+        self.camera.look_at += offset;
+        for light in &mut self.lights {
+            match light {
+                Light::Ambient { .. } => {}
+                Light::Point { position, .. } | Light::Spot { position, .. } => *position += offset,
+            }
+        }
+        for object in &mut self.objects {
+            match &mut object.shape {
+                Shape::Sphere { center, .. } => *center += offset,
+                // n·(x − o) + d = 0, so the new offset is d − n·o.
+                Shape::Plane { normal, offset: d } => *d -= normal.dot(offset),
+                Shape::Triangle { vertices } => vertices.iter_mut().for_each(|v| *v += offset),
+            }
+        }
+        self
+    }
+
     /// The same scene at another image size (tests render small).
     pub fn with_size(mut self, width: u32, height: u32) -> Scene {
         self.image.width = width;

@@ -1,0 +1,111 @@
+#![doc = include_str!("../README.md")]
+
+mod lights;
+
+pub use ch02_hits::{Camera, Hit, Ray, closest_hit, intersect, render, toolkit};
+pub use lights::{Arrival, Incoming, arrival, spot_factor};
+
+use toolkit::scene::Material;
+use toolkit::{Color, Image, Scene, Stats, Vec3};
+
+/// A hit as shading sees it: where, which way the surface faces, what it is made of.
+#[derive(Debug, Clone, Copy)]
+pub struct Surface<'a> {
+    pub hit: Hit,
+    /// The unit normal turned to face the incoming ray. Every surface is
+    /// two-sided: the back of a plane or triangle (and the inside of a
+    /// sphere) is shaded like its front, seen from where the eye is.
+    pub normal: Vec3,
+    /// Unit vector from the point back along the ray (towards the eye).
+    pub to_eye: Vec3,
+    pub material: &'a Material,
+}
+
+impl<'a> Surface<'a> {
+    /// The surface seen by `ray` at `hit`.
+    pub fn new(scene: &'a Scene, hit: Hit, ray: &Ray) -> Surface<'a> {
+        let facing = if hit.normal.dot(ray.direction) > 0.0 {
+            -hit.normal
+        } else {
+            hit.normal
+        };
+        Surface {
+            hit,
+            normal: facing,
+            to_eye: -ray.direction,
+            material: scene.material(&scene.objects[hit.object]),
+        }
+    }
+}
+
+/// Lambert's cosine law: light arriving at angle θ to the normal spreads over
+/// 1/cos θ times the area, so a matte surface sends back
+/// albedo × radiance × max(0, n·l).
+pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
+    let cos_theta = surface.normal.dot(incoming.direction).max(0.0);
+    surface.material.color * incoming.radiance * cos_theta
+}
+
+/// The light that reaches the eye from `surface`, summed over all lights,
+/// channel by channel.
+///
+/// Ambient light adds albedo × ambient colour. Every other light adds
+/// `reflect(incoming)` if it is in front of the surface (n·l > 0) and
+/// `visible(surface, incoming)` says nothing blocks it. Nothing is asked of a
+/// light behind the surface or outside its cone: it could add nothing.
+///
+/// This chapter passes [`always_visible`] and [`lambert`]; chapter 4 passes a
+/// shadow ray, chapter 5 adds a highlight to `reflect`.
+pub fn direct_light(
+    scene: &Scene,
+    surface: &Surface,
+    mut visible: impl FnMut(&Surface, &Incoming) -> bool,
+    reflect: impl Fn(&Incoming) -> Color,
+) -> Color {
+    let mut color = Color::ZERO;
+    for light in &scene.lights {
+        match arrival(light, surface.hit.point) {
+            Arrival::Ambient(ambient) => color += surface.material.color * ambient,
+            Arrival::From(incoming) => {
+                let in_front = surface.normal.dot(incoming.direction) > 0.0;
+                if in_front && visible(surface, &incoming) {
+                    color += reflect(&incoming);
+                }
+            }
+            Arrival::Dark => {}
+        }
+    }
+    color
+}
+
+/// Chapter 3 has no shadows yet: every light is seen from everywhere.
+pub fn always_visible(_: &Surface, _: &Incoming) -> bool {
+    true
+}
+
+/// The colour seen along a ray: the background if it hits nothing, else the
+/// Lambert-shaded closest hit.
+pub fn trace(scene: &Scene, ray: &Ray) -> Color {
+    match closest_hit(&scene.objects, ray, 0.0, f32::INFINITY) {
+        None => scene.image.background,
+        Some(hit) => {
+            let surface = Surface::new(scene, hit, ray);
+            direct_light(scene, &surface, always_visible, |incoming| {
+                lambert(&surface, incoming)
+            })
+        }
+    }
+}
+
+/// Chapter 3's picture.
+pub fn render_lambert(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
+    render(scene, |ray, _| trace(scene, ray), on_row)
+}
+
+/// This chapter, for the command line.
+pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+    folder: "03-lambert",
+    title: "Lambert shading with ambient, point and spot lights",
+    default_scene_path: "chapters/03-lambert/scenes/default.toml",
+    default_scene: include_str!("../scenes/default.toml"),
+};

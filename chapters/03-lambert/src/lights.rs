@@ -1,0 +1,98 @@
+//! Light arriving at a point: from where, and how much.
+
+use crate::toolkit::scene::Light;
+use crate::toolkit::{Color, Vec3};
+
+/// Light from a point or spot light arriving at a point of a surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Incoming {
+    /// Unit vector from the surface point towards the light (the lecture's l).
+    pub direction: Vec3,
+    /// Distance from the surface point to the light.
+    pub distance: f32,
+    /// Colour × intensity / r², times the spot's cone factor.
+    pub radiance: Color,
+    /// Does the light cast shadows? (Chapter 4 traces no shadow ray if not.)
+    pub casts_shadows: bool,
+}
+
+/// What one light sends to a point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Arrival {
+    /// Ambient light: the same everywhere, from no direction.
+    Ambient(Color),
+    /// Light from one direction.
+    From(Incoming),
+    /// Nothing: outside a spot's cone, or the light sits exactly on the point.
+    Dark,
+}
+
+/// The light that `light` sends to `point`.
+///
+/// A point light of intensity I at distance r gives colour × I / r²: its
+/// power spreads over a sphere whose area grows with r². A spot light is a
+/// point light times [`spot_factor`].
+pub fn arrival(light: &Light, point: Vec3) -> Arrival {
+    match *light {
+        Light::Ambient { color } => Arrival::Ambient(color),
+        Light::Point {
+            position,
+            color,
+            intensity,
+            shadows,
+        } => from_point(position, color * intensity, shadows, point),
+        Light::Spot {
+            position,
+            direction,
+            color,
+            intensity,
+            inner_degrees,
+            outer_degrees,
+            shadows,
+        } => {
+            let Arrival::From(mut incoming) =
+                from_point(position, color * intensity, shadows, point)
+            else {
+                return Arrival::Dark;
+            };
+            let cone = spot_factor(direction, inner_degrees, outer_degrees, -incoming.direction);
+            if cone == 0.0 {
+                return Arrival::Dark;
+            }
+            incoming.radiance *= cone;
+            Arrival::From(incoming)
+        }
+    }
+}
+
+/// Light of strength `power` from `position`, falling off with 1/r².
+fn from_point(position: Vec3, power: Color, casts_shadows: bool, point: Vec3) -> Arrival {
+    let to_light = position - point;
+    let distance = to_light.length();
+    if distance == 0.0 {
+        return Arrival::Dark; // a light exactly on the point has no direction
+    }
+    Arrival::From(Incoming {
+        direction: to_light / distance,
+        distance,
+        radiance: power / (distance * distance),
+        casts_shadows,
+    })
+}
+
+/// How much of a spot light goes out along `ray` (a unit vector from the
+/// light): 1 within `inner` degrees of the axis, 0 beyond `outer`, and a
+/// smooth step (3s² − 2s³) of the cosine in between, so the edge has no seam.
+pub fn spot_factor(axis: Vec3, inner_degrees: f32, outer_degrees: f32, ray: Vec3) -> f32 {
+    let cos_angle = axis.dot(ray);
+    let cos_inner = inner_degrees.to_radians().cos();
+    let cos_outer = outer_degrees.to_radians().cos();
+    if cos_angle >= cos_inner {
+        return 1.0;
+    }
+    if cos_angle <= cos_outer {
+        return 0.0;
+    }
+    let s = (cos_angle - cos_outer) / (cos_inner - cos_outer);
+    s * s * (3.0 - 2.0 * s)
+}

@@ -1,0 +1,22 @@
+//! Renders a scene with Lambert shading: ambient, point and spot lights.
+
+use ch03_lambert::toolkit::cli::{RenderArgs, run};
+use ch03_lambert::{CHAPTER, render_lambert};
+use clap::Parser;
+
+/// Chapter 3: Lambert shading. Each hit is lit by every light as if nothing
+/// stood in between: ambient light everywhere, point lights falling off with
+/// 1/r², spot lights within their cone; by the cosine law max(0, n·l).
+#[derive(Parser)]
+#[command(version)]
+struct Args {
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+fn main() -> std::process::ExitCode {
+    let args = Args::parse();
+    run(&CHAPTER, &args.render, |scene, on_row| {
+        render_lambert(scene, on_row)
+    })
+}

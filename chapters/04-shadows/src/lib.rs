@@ -1,0 +1,96 @@
+#![doc = include_str!("../README.md")]
+
+mod offset;
+
+pub use ch03_lambert::{
+    Camera, Hit, Incoming, Ray, Surface, closest_hit, direct_light, intersect, lambert, render,
+    toolkit,
+};
+pub use offset::offset_origin;
+
+use toolkit::scene::Object;
+use toolkit::{Color, Image, Scene, Stats};
+
+/// Where shadow rays start.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Origin {
+    /// Just off the surface, by [`offset_origin`]: no acne.
+    #[default]
+    Offset,
+    /// Exactly at the computed hit point: shows shadow acne (for the lesson).
+    HitPoint,
+}
+
+/// The shadow ray from a surface towards a light, and the distance to the
+/// light along it: anything hit before that distance blocks the light.
+pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: Origin) -> (Ray, f32) {
+    let point = surface.hit.point;
+    let light = point + incoming.direction * incoming.distance;
+    let start = match origin {
+        Origin::Offset => offset_origin(point, surface.hit.normal, incoming.direction),
+        Origin::HitPoint => point,
+    };
+    let ray = Ray {
+        origin: start,
+        direction: incoming.direction,
+    };
+    (ray, start.distance(light))
+}
+
+/// Is any shadow-casting object hit for t in (t_min, t_max)? Unlike
+/// `closest_hit`, the first blocker found is enough: we stop there.
+pub fn any_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
+    objects
+        .iter()
+        .filter(|object| object.shadows)
+        .any(|object| intersect(&object.shape, ray, t_min, t_max).is_some())
+}
+
+/// Does the light reach the surface? Traces one shadow ray, unless the light
+/// casts no shadows; then it is free and nothing is traced.
+pub fn light_is_free(
+    scene: &Scene,
+    surface: &Surface,
+    incoming: &Incoming,
+    origin: Origin,
+    stats: &mut Stats,
+) -> bool {
+    if !incoming.casts_shadows {
+        return true;
+    }
+    stats.shadow += 1;
+    let (ray, distance) = shadow_ray(surface, incoming, origin);
+    !any_hit(&scene.objects, &ray, 0.0, distance)
+}
+
+/// Chapter 3's Lambert shading at a surface, with each light first asked
+/// for by a shadow ray.
+pub fn shade(scene: &Scene, surface: &Surface, origin: Origin, stats: &mut Stats) -> Color {
+    direct_light(
+        scene,
+        surface,
+        |surface, incoming| light_is_free(scene, surface, incoming, origin, stats),
+        |incoming| lambert(surface, incoming),
+    )
+}
+
+/// The colour seen along a ray: the background, or the shaded closest hit.
+pub fn trace(scene: &Scene, ray: &Ray, origin: Origin, stats: &mut Stats) -> Color {
+    match closest_hit(&scene.objects, ray, 0.0, f32::INFINITY) {
+        None => scene.image.background,
+        Some(hit) => shade(scene, &Surface::new(scene, hit, ray), origin, stats),
+    }
+}
+
+/// Chapter 4's picture.
+pub fn render_shadows(scene: &Scene, origin: Origin, on_row: impl Fn() + Sync) -> (Image, Stats) {
+    render(scene, |ray, stats| trace(scene, ray, origin, stats), on_row)
+}
+
+/// This chapter, for the command line.
+pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+    folder: "04-shadows",
+    title: "shadow rays",
+    default_scene_path: "chapters/04-shadows/scenes/default.toml",
+    default_scene: include_str!("../scenes/default.toml"),
+};
