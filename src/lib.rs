@@ -7,13 +7,13 @@
 /// routines of chapter 2 that it is built on.
 pub mod tracer {
     pub use ch02_hits::{
-        hit_at, intersect_plane, intersect_sphere, intersect_triangle, sphere_point, sphere_roots,
-        triangle_normal,
+        hit_at, intersect, intersect_plane, intersect_sphere, intersect_triangle, sphere_point,
+        sphere_roots, triangle_normal,
     };
-    pub use ch04_shadows::*;
+    pub use ch07_termination::*;
 }
 
-pub use ch04_shadows::toolkit;
+pub use ch07_termination::toolkit;
 
 use toolkit::cli::Chapter;
 use toolkit::{Image, Scene, Stats};
@@ -22,7 +22,7 @@ use toolkit::{Image, Scene, Stats};
 /// the showcase.
 pub const CHAPTER: Chapter = tracer::CHAPTER;
 
-/// Renders a scene with the complete tracer.
+/// Renders a scene with the complete tracer and the scene's own criteria.
 pub fn render(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
-    tracer::render_shadows(scene, tracer::Origin::Offset, on_row)
+    tracer::render_terminated(scene, tracer::Termination::of(scene), on_row)
 }

@@ -63,22 +63,33 @@ pub fn light_is_free(
     !any_hit(&scene.objects, &ray, 0.0, distance)
 }
 
-/// Chapter 3's Lambert shading at a surface, with each light first asked
-/// for by a shadow ray.
-pub fn shade(scene: &Scene, surface: &Surface, origin: Origin, stats: &mut Stats) -> Color {
-    direct_light(
-        scene,
-        surface,
-        |surface, incoming| light_is_free(scene, surface, incoming, origin, stats),
-        |incoming| lambert(surface, incoming),
-    )
+/// The light reaching the eye from a surface: chapter 3's `direct_light`,
+/// with each light first asked for by a shadow ray. `reflect` says how much
+/// of a free light comes back (here: [`lambert`]; chapter 5 adds a highlight).
+pub fn shade(
+    scene: &Scene,
+    surface: &Surface,
+    origin: Origin,
+    stats: &mut Stats,
+    reflect: impl Fn(&Incoming) -> Color,
+) -> Color {
+    let visible = |surface: &Surface, incoming: &Incoming| {
+        light_is_free(scene, surface, incoming, origin, stats)
+    };
+    direct_light(scene, surface, visible, reflect)
 }
 
-/// The colour seen along a ray: the background, or the shaded closest hit.
+/// The colour seen along a ray: the background, or the closest hit lit by
+/// Lambert's law where its shadow rays are free.
 pub fn trace(scene: &Scene, ray: &Ray, origin: Origin, stats: &mut Stats) -> Color {
     match closest_hit(&scene.objects, ray, 0.0, f32::INFINITY) {
         None => scene.image.background,
-        Some(hit) => shade(scene, &Surface::new(scene, hit, ray), origin, stats),
+        Some(hit) => {
+            let surface = Surface::new(scene, hit, ray);
+            shade(scene, &surface, origin, stats, |incoming| {
+                lambert(&surface, incoming)
+            })
+        }
     }
 }
 

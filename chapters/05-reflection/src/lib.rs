@@ -1,0 +1,134 @@
+#![doc = include_str!("../README.md")]
+
+mod mirror;
+
+pub use ch04_shadows::{
+    Camera, Hit, Incoming, Origin, Ray, Surface, any_hit, closest_hit, lambert, offset_origin,
+    render, shade, toolkit,
+};
+pub use mirror::{highlight, mirror_ray, reflect};
+
+use toolkit::{Color, Image, Scene, Stats};
+
+/// Which kind of secondary ray.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    Reflection,
+    Refraction,
+}
+
+/// A ray that leaves a hit, with the weight its colour gets in the hit's colour.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Secondary {
+    pub ray: Ray,
+    pub weight: Color,
+    pub kind: Kind,
+}
+
+/// What a recursive (Whitted) tracer decides at each hit. This chapter
+/// answers each question with the mirror; chapter 6 brings a refracted ray,
+/// chapter 7 explicit termination criteria, without changing [`trace`].
+pub trait Whitted: Sync {
+    /// The light that reaches the eye from the surface straight from the
+    /// lights: chapter 4's shadowed Lambert shading plus the highlight.
+    fn local(&self, scene: &Scene, surface: &Surface, stats: &mut Stats) -> Color {
+        shade(scene, surface, Origin::Offset, stats, |incoming| {
+            lambert(surface, incoming) + highlight(surface, incoming)
+        })
+    }
+
+    /// The rays that leave the surface (at most two: a mirror ray and a
+    /// refracted one).
+    fn secondary_rays(&self, surface: &Surface, incoming: &Ray) -> [Option<Secondary>; 2];
+
+    /// May a ray be traced at `depth` (1 for the first bounce) on a path
+    /// whose weights multiply to `weight`?
+    fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool;
+}
+
+/// This chapter's tracer: mirrors, with recursion ended at a fixed depth.
+#[derive(Debug, Clone, Copy)]
+pub struct Mirrors {
+    /// The scene's `max_depth`: the number of bounces followed.
+    pub max_depth: u32,
+}
+
+impl Whitted for Mirrors {
+    fn secondary_rays(&self, surface: &Surface, incoming: &Ray) -> [Option<Secondary>; 2] {
+        [
+            mirror_ray(surface, incoming, surface.material.reflectance),
+            None,
+        ]
+    }
+
+    fn may_trace(&self, depth: u32, _: Color, stats: &mut Stats) -> bool {
+        let within = depth <= self.max_depth;
+        if !within {
+            stats.ended_max_depth += 1;
+        }
+        within
+    }
+}
+
+/// The colour seen along `ray`, which is at `depth` on a path of `weight`.
+///
+/// The background if the ray hits nothing; otherwise the hit's local light
+/// plus, for each secondary ray that may be traced, its weight times the
+/// colour seen along it (found by calling `trace` again: the recursion).
+pub fn trace(
+    tracer: &impl Whitted,
+    scene: &Scene,
+    ray: &Ray,
+    depth: u32,
+    weight: Color,
+    stats: &mut Stats,
+) -> Color {
+    let Some(hit) = closest_hit(&scene.objects, ray, 0.0, f32::INFINITY) else {
+        stats.ended_no_hit += 1;
+        return scene.image.background;
+    };
+    let surface = Surface::new(scene, hit, ray);
+    let mut color = tracer.local(scene, &surface, stats);
+    for secondary in tracer.secondary_rays(&surface, ray).into_iter().flatten() {
+        let path_weight = weight * secondary.weight;
+        if tracer.may_trace(depth + 1, path_weight, stats) {
+            match secondary.kind {
+                Kind::Reflection => stats.reflection += 1,
+                Kind::Refraction => stats.refraction += 1,
+            }
+            let seen = trace(tracer, scene, &secondary.ray, depth + 1, path_weight, stats);
+            color += secondary.weight * seen;
+        }
+    }
+    color
+}
+
+/// Renders a scene with a Whitted tracer: each primary ray starts a path of
+/// weight 1 at depth 0.
+pub fn render_whitted(
+    tracer: &impl Whitted,
+    scene: &Scene,
+    on_row: impl Fn() + Sync,
+) -> (Image, Stats) {
+    render(
+        scene,
+        |ray, stats| trace(tracer, scene, ray, 0, Color::ONE, stats),
+        on_row,
+    )
+}
+
+/// Chapter 5's picture.
+pub fn render_mirrors(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
+    let tracer = Mirrors {
+        max_depth: scene.trace.max_depth,
+    };
+    render_whitted(&tracer, scene, on_row)
+}
+
+/// This chapter, for the command line.
+pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+    folder: "05-reflection",
+    title: "specular reflection",
+    default_scene_path: "chapters/05-reflection/scenes/default.toml",
+    default_scene: include_str!("../scenes/default.toml"),
+};

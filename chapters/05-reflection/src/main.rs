@@ -1,0 +1,23 @@
+//! Renders a scene with mirrors, highlights, shadows and Lambert shading.
+
+use ch05_reflection::toolkit::cli::{RenderArgs, run};
+use ch05_reflection::{CHAPTER, render_mirrors};
+use clap::Parser;
+
+/// Chapter 5: specular reflection. At a mirror, the reflected ray
+/// d_o = d_i − 2(d_i·n)n is traced in turn and its colour, weighted by the
+/// material's reflectance, is added; shiny materials get highlights. The
+/// recursion stops after the scene's [trace] max_depth bounces.
+#[derive(Parser)]
+#[command(version)]
+struct Args {
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+fn main() -> std::process::ExitCode {
+    let args = Args::parse();
+    run(&CHAPTER, &args.render, |scene, on_row| {
+        render_mirrors(scene, on_row)
+    })
+}

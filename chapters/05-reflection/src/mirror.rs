@@ -1,0 +1,45 @@
+//! Mirror reflection and the highlight of point lights.
+
+use crate::toolkit::{Color, Vec3};
+use crate::{Incoming, Kind, Ray, Secondary, Surface, offset_origin};
+
+/// The mirror direction of `d` about the unit normal `n`:
+/// d_o = d_i − 2(d_i·n)n.
+///
+/// The component of d along n flips sign and the rest is kept, so the angle
+/// out equals the angle in, and |d_o| = |d_i|.
+pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
+    d - 2.0 * d.dot(n) * n
+}
+
+/// The mirror ray leaving `surface` for a ray that arrived along `incoming`,
+/// carrying `weight` of its colour; none if the weight is zero (nothing
+/// would come of it). It starts off the surface like a shadow ray.
+pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Secondary> {
+    if weight == Color::ZERO {
+        return None;
+    }
+    let direction = reflect(incoming.direction, surface.normal).normalize();
+    let origin = offset_origin(surface.hit.point, surface.hit.normal, direction);
+    Some(Secondary {
+        ray: Ray { origin, direction },
+        weight,
+        kind: Kind::Reflection,
+    })
+}
+
+/// The highlight of a light on a shiny surface (Blinn–Phong):
+/// specular × radiance × max(0, n·h)^shininess, where h is the unit vector
+/// halfway between the directions to the light and to the eye.
+///
+/// A mirror ray is a single direction and never hits a point light, which
+/// has no size; the highlight puts the light's reflection back in.
+pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
+    let material = surface.material;
+    if material.specular == 0.0 {
+        return Color::ZERO;
+    }
+    let halfway = (incoming.direction + surface.to_eye).normalize_or_zero();
+    let cos = surface.normal.dot(halfway).max(0.0);
+    material.specular * incoming.radiance * cos.powf(material.shininess)
+}

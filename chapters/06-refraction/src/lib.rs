@@ -1,0 +1,115 @@
+#![doc = include_str!("../README.md")]
+
+mod snell;
+
+pub use ch05_reflection::{
+    Camera, Hit, Kind, Mirrors, Ray, Secondary, Surface, Whitted, closest_hit, mirror_ray,
+    offset_origin, reflect, render, render_whitted, toolkit, trace,
+};
+pub use snell::{refract, schlick};
+
+use toolkit::{Color, Image, Scene, Stats, Vec3};
+
+/// How light splits at a transparent surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Split {
+    /// Weight of the mirror ray (the material's reflectance, plus what
+    /// total internal reflection or the Fresnel term sends there).
+    pub reflected: Color,
+    /// Weight of the refracted ray, and its direction (none if totally reflected).
+    pub refracted: Option<(Color, Vec3)>,
+}
+
+/// Splits the light of a ray arriving at `surface` between reflection and
+/// refraction.
+///
+/// Entering or leaving is decided by the sign of d·n with the surface's
+/// outward normal: d·n < 0 means the ray comes from outside, from index 1
+/// into the material's `ior`; otherwise it leaves, from `ior` into 1. (A
+/// material's `ior` is relative to what surrounds the object: an air bubble
+/// inside glass has ior 1/1.5.)
+pub fn split(surface: &Surface, incoming: &Ray) -> Split {
+    let material = surface.material;
+    let transparency = Color::splat(material.transparency);
+    let entering = incoming.direction.dot(surface.hit.normal) < 0.0;
+    let (n1, n2) = if entering {
+        (1.0, material.ior)
+    } else {
+        (material.ior, 1.0)
+    };
+    let Some(direction) = refract(incoming.direction, surface.normal, n1 / n2) else {
+        // Total internal reflection: the transmitted light is reflected too.
+        return Split {
+            reflected: material.reflectance + transparency,
+            refracted: None,
+        };
+    };
+    let fresnel = if material.fresnel {
+        // The cosine on the side of the smaller index.
+        let cos_in = -surface.normal.dot(incoming.direction);
+        let cos_out = surface.normal.dot(-direction);
+        schlick(if n1 <= n2 { cos_in } else { cos_out }, n1, n2)
+    } else {
+        0.0
+    };
+    Split {
+        reflected: material.reflectance + transparency * fresnel,
+        refracted: Some((transparency * (1.0 - fresnel), direction)),
+    }
+}
+
+/// The refracted ray, started just off the surface on the far side; none if
+/// its weight is zero.
+pub fn refracted_ray(surface: &Surface, direction: Vec3, weight: Color) -> Option<Secondary> {
+    if weight == Color::ZERO {
+        return None;
+    }
+    let origin = offset_origin(surface.hit.point, surface.hit.normal, direction);
+    Some(Secondary {
+        ray: Ray { origin, direction },
+        weight,
+        kind: Kind::Refraction,
+    })
+}
+
+/// This chapter's tracer: mirrors and transparent materials, with chapter
+/// 5's fixed depth.
+#[derive(Debug, Clone, Copy)]
+pub struct Glass {
+    pub mirrors: Mirrors,
+}
+
+impl Whitted for Glass {
+    fn secondary_rays(&self, surface: &Surface, incoming: &Ray) -> [Option<Secondary>; 2] {
+        if surface.material.transparency == 0.0 {
+            return self.mirrors.secondary_rays(surface, incoming);
+        }
+        let split = split(surface, incoming);
+        let refraction = split
+            .refracted
+            .and_then(|(weight, direction)| refracted_ray(surface, direction, weight));
+        [mirror_ray(surface, incoming, split.reflected), refraction]
+    }
+
+    fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
+        self.mirrors.may_trace(depth, weight, stats)
+    }
+}
+
+/// Chapter 6's picture.
+pub fn render_glass(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
+    let tracer = Glass {
+        mirrors: Mirrors {
+            max_depth: scene.trace.max_depth,
+        },
+    };
+    render_whitted(&tracer, scene, on_row)
+}
+
+/// This chapter, for the command line.
+pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+    folder: "06-refraction",
+    title: "refraction by Snell's law",
+    default_scene_path: "chapters/06-refraction/scenes/default.toml",
+    default_scene: include_str!("../scenes/default.toml"),
+};

@@ -1,0 +1,24 @@
+//! Renders a scene with glass: refraction, total internal reflection, Fresnel.
+
+use ch06_refraction::toolkit::cli::{RenderArgs, run};
+use ch06_refraction::{CHAPTER, render_glass};
+use clap::Parser;
+
+/// Chapter 6: refraction. At a transparent material a second ray continues
+/// through the surface, bent by Snell's law n₁ sin θ₁ = n₂ sin θ₂; where no
+/// such ray exists (total internal reflection) its light goes to the mirror
+/// ray instead. Materials with fresnel = true split the light by Schlick's
+/// approximation.
+#[derive(Parser)]
+#[command(version)]
+struct Args {
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+fn main() -> std::process::ExitCode {
+    let args = Args::parse();
+    run(&CHAPTER, &args.render, |scene, on_row| {
+        render_glass(scene, on_row)
+    })
+}
