@@ -46,10 +46,30 @@ pub fn any_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
         .any(|object| intersect(&object.shape, ray, t_min, t_max).is_some())
 }
 
+/// What rays are traced against. The two questions a tracer asks of its
+/// objects: the closest hit (chapter 2) and whether anything blocks a
+/// shadow ray (this chapter). Chapters 2 to 7 ask them of every object in
+/// turn; chapter 8 answers them faster with a bounding volume hierarchy.
+pub trait World: Sync {
+    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit>;
+    fn any_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool;
+}
+
+/// The objects themselves, tested one by one.
+impl World for [Object] {
+    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        closest_hit(self, ray, t_min, t_max)
+    }
+
+    fn any_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
+        any_hit(self, ray, t_min, t_max)
+    }
+}
+
 /// Does the light reach the surface? Traces one shadow ray, unless the light
 /// casts no shadows; then it is free and nothing is traced.
 pub fn light_is_free(
-    scene: &Scene,
+    world: &(impl World + ?Sized),
     surface: &Surface,
     incoming: &Incoming,
     origin: Origin,
@@ -60,7 +80,7 @@ pub fn light_is_free(
     }
     stats.shadow += 1;
     let (ray, distance) = shadow_ray(surface, incoming, origin);
-    !any_hit(&scene.objects, &ray, 0.0, distance)
+    !world.any_hit(&ray, 0.0, distance)
 }
 
 /// The light reaching the eye from a surface: chapter 3's `direct_light`,
@@ -68,13 +88,14 @@ pub fn light_is_free(
 /// of a free light comes back (here: [`lambert`]; chapter 5 adds a highlight).
 pub fn shade(
     scene: &Scene,
+    world: &(impl World + ?Sized),
     surface: &Surface,
     origin: Origin,
     stats: &mut Stats,
     reflect: impl Fn(&Incoming) -> Color,
 ) -> Color {
     let visible = |surface: &Surface, incoming: &Incoming| {
-        light_is_free(scene, surface, incoming, origin, stats)
+        light_is_free(world, surface, incoming, origin, stats)
     };
     direct_light(scene, surface, visible, reflect)
 }
@@ -86,9 +107,14 @@ pub fn trace(scene: &Scene, ray: &Ray, origin: Origin, stats: &mut Stats) -> Col
         None => scene.image.background,
         Some(hit) => {
             let surface = Surface::new(scene, hit, ray);
-            shade(scene, &surface, origin, stats, |incoming| {
-                lambert(&surface, incoming)
-            })
+            shade(
+                scene,
+                &scene.objects[..],
+                &surface,
+                origin,
+                stats,
+                |incoming| lambert(&surface, incoming),
+            )
         }
     }
 }

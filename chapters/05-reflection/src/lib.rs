@@ -3,8 +3,8 @@
 mod mirror;
 
 pub use ch04_shadows::{
-    Camera, Hit, Incoming, Origin, Ray, Surface, any_hit, closest_hit, lambert, offset_origin,
-    render, shade, toolkit,
+    Camera, Hit, Incoming, Origin, Ray, Surface, World, any_hit, closest_hit, lambert,
+    offset_origin, render, shade, toolkit,
 };
 pub use mirror::{highlight, mirror_ray, reflect};
 
@@ -31,8 +31,14 @@ pub struct Secondary {
 pub trait Whitted: Sync {
     /// The light that reaches the eye from the surface straight from the
     /// lights: chapter 4's shadowed Lambert shading plus the highlight.
-    fn local(&self, scene: &Scene, surface: &Surface, stats: &mut Stats) -> Color {
-        shade(scene, surface, Origin::Offset, stats, |incoming| {
+    fn local(
+        &self,
+        scene: &Scene,
+        world: &(impl World + ?Sized),
+        surface: &Surface,
+        stats: &mut Stats,
+    ) -> Color {
+        shade(scene, world, surface, Origin::Offset, stats, |incoming| {
             lambert(surface, incoming) + highlight(surface, incoming)
         })
     }
@@ -70,7 +76,23 @@ impl Whitted for Mirrors {
     }
 }
 
-/// The colour seen along `ray`, which is at `depth` on a path of `weight`.
+/// Where a ray is on its path: how many bounces from the eye, and the
+/// product of the weights it carries.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Path {
+    pub depth: u32,
+    pub weight: Color,
+}
+
+impl Path {
+    /// A primary ray: depth 0, weight 1.
+    pub const START: Path = Path {
+        depth: 0,
+        weight: Color::ONE,
+    };
+}
+
+/// The colour seen along `ray`, traced against `world`.
 ///
 /// The background if the ray hits nothing; otherwise the hit's local light
 /// plus, for each secondary ray that may be traced, its weight times the
@@ -78,41 +100,45 @@ impl Whitted for Mirrors {
 pub fn trace(
     tracer: &impl Whitted,
     scene: &Scene,
+    world: &(impl World + ?Sized),
     ray: &Ray,
-    depth: u32,
-    weight: Color,
+    path: Path,
     stats: &mut Stats,
 ) -> Color {
-    let Some(hit) = closest_hit(&scene.objects, ray, 0.0, f32::INFINITY) else {
+    let Some(hit) = world.closest_hit(ray, 0.0, f32::INFINITY) else {
         stats.ended_no_hit += 1;
         return scene.image.background;
     };
     let surface = Surface::new(scene, hit, ray);
-    let mut color = tracer.local(scene, &surface, stats);
+    let mut color = tracer.local(scene, world, &surface, stats);
     for secondary in tracer.secondary_rays(&surface, ray).into_iter().flatten() {
-        let path_weight = weight * secondary.weight;
-        if tracer.may_trace(depth + 1, path_weight, stats) {
+        let next = Path {
+            depth: path.depth + 1,
+            weight: path.weight * secondary.weight,
+        };
+        if tracer.may_trace(next.depth, next.weight, stats) {
             match secondary.kind {
                 Kind::Reflection => stats.reflection += 1,
                 Kind::Refraction => stats.refraction += 1,
             }
-            let seen = trace(tracer, scene, &secondary.ray, depth + 1, path_weight, stats);
+            let seen = trace(tracer, scene, world, &secondary.ray, next, stats);
             color += secondary.weight * seen;
         }
     }
     color
 }
 
-/// Renders a scene with a Whitted tracer: each primary ray starts a path of
-/// weight 1 at depth 0.
+/// Renders a scene with a Whitted tracer against `world` (the scene's
+/// objects, or a faster structure over them): each primary ray starts a path.
 pub fn render_whitted(
     tracer: &impl Whitted,
     scene: &Scene,
+    world: &(impl World + ?Sized),
     on_row: impl Fn() + Sync,
 ) -> (Image, Stats) {
     render(
         scene,
-        |ray, stats| trace(tracer, scene, ray, 0, Color::ONE, stats),
+        |ray, stats| trace(tracer, scene, world, ray, Path::START, stats),
         on_row,
     )
 }
@@ -122,7 +148,7 @@ pub fn render_mirrors(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats)
     let tracer = Mirrors {
         max_depth: scene.trace.max_depth,
     };
-    render_whitted(&tracer, scene, on_row)
+    render_whitted(&tracer, scene, &scene.objects[..], on_row)
 }
 
 /// This chapter, for the command line.

@@ -3,8 +3,8 @@
 mod snell;
 
 pub use ch05_reflection::{
-    Camera, Hit, Kind, Mirrors, Ray, Secondary, Surface, Whitted, closest_hit, mirror_ray,
-    offset_origin, reflect, render, render_whitted, toolkit, trace,
+    Camera, Hit, Kind, Mirrors, Path, Ray, Secondary, Surface, Whitted, World, closest_hit,
+    mirror_ray, offset_origin, reflect, render, render_whitted, toolkit, trace,
 };
 pub use snell::{refract, schlick};
 
@@ -103,7 +103,7 @@ pub fn render_glass(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
             max_depth: scene.trace.max_depth,
         },
     };
-    render_whitted(&tracer, scene, on_row)
+    render_whitted(&tracer, scene, &scene.objects[..], on_row)
 }
 
 /// This chapter, for the command line.

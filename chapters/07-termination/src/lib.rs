@@ -1,8 +1,8 @@
 #![doc = include_str!("../README.md")]
 
 pub use ch06_refraction::{
-    Camera, Glass, Hit, Kind, Mirrors, Ray, Secondary, Surface, Whitted, closest_hit, render,
-    render_whitted, toolkit, trace,
+    Camera, Glass, Hit, Kind, Mirrors, Path, Ray, Secondary, Surface, Whitted, World, closest_hit,
+    render, render_whitted, toolkit, trace,
 };
 
 use toolkit::{Color, Image, Scene, Stats};
@@ -67,7 +67,7 @@ pub fn render_terminated(
     termination: Termination,
     on_row: impl Fn() + Sync,
 ) -> (Image, Stats) {
-    render_whitted(&Tracer { termination }, scene, on_row)
+    render_whitted(&Tracer { termination }, scene, &scene.objects[..], on_row)
 }
 
 /// This chapter, for the command line.
