@@ -15,6 +15,11 @@ pub mod tracer {
 
 pub use ch07_termination::toolkit;
 
+pub mod accuracy;
+pub mod bench;
+pub mod nff;
+pub mod verify;
+
 use toolkit::cli::Chapter;
 use toolkit::{Image, Scene, Stats};
 
@@ -22,7 +27,8 @@ use toolkit::{Image, Scene, Stats};
 /// the showcase.
 pub const CHAPTER: Chapter = tracer::CHAPTER;
 
-/// Renders a scene with the complete tracer and the scene's own criteria.
+/// Renders a scene with the complete tracer and the scene's own criteria,
+/// its rays traced against a BVH of the scene (chapter 8).
 pub fn render(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
-    tracer::render_terminated(scene, tracer::Termination::of(scene), on_row)
+    ch08_bvh::render_bvh(scene, tracer::Termination::of(scene), on_row)
 }

@@ -3,7 +3,7 @@
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use raybook::toolkit::cli::{RenderArgs, run};
+use raybook::toolkit::cli::{RenderArgs, run, run_loaded};
 use raybook::{CHAPTER, render};
 
 /// raybook: a step-by-step ray tracer. Without a command, renders the
@@ -20,13 +20,30 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Renders a scene file (TOML) with the complete tracer.
+    /// Renders a scene file (TOML, or NFF if it ends in .nff) with the
+    /// complete tracer.
     Render(RenderArgs),
+    /// Times the SPD scenes, against POV-Ray where it is installed.
+    Bench(raybook::bench::BenchArgs),
+    /// Measures what accuracy costs in time: depth, threshold, samples per
+    /// pixel and effects, as a table, a CSV and a plot.
+    Accuracy(raybook::accuracy::AccuracyArgs),
+    /// Checks a picture made by your own tracer, in any language, against a
+    /// chapter's reference picture.
+    Verify(raybook::verify::VerifyArgs),
 }
 
 fn main() -> ExitCode {
     match Cli::parse().command {
-        Some(Command::Render(args)) => run(&CHAPTER, &args, |scene, on_row| render(scene, on_row)),
+        Some(Command::Render(args)) => {
+            let loaded = raybook::nff::load_scene(&args, &CHAPTER);
+            run_loaded(&CHAPTER, &args, loaded, |scene, on_row| {
+                render(scene, on_row)
+            })
+        }
+        Some(Command::Bench(args)) => raybook::bench::run(&args),
+        Some(Command::Accuracy(args)) => raybook::accuracy::main(&args),
+        Some(Command::Verify(args)) => raybook::verify::main(&args),
         None => {
             let args = RenderArgs {
                 output: Some("raybook.png".into()),

@@ -334,3 +334,36 @@ fn unreadable_file() {
     assert_eq!(e.file, "no/such/scene.toml");
     assert!(e.message.contains("cannot read"), "{e}");
 }
+
+#[test]
+fn mesh_whose_obj_file_is_missing() {
+    let mesh = "type = \"mesh\"\npath = \"no/such/mesh.obj\"\nmaterial = \"red\"\n";
+    let e = broken(
+        "type = \"triangle\"\nvertices = [[-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]\nmaterial = \"red\"\n",
+        mesh,
+    );
+    let line = line_of(
+        "path =",
+        "type = \"triangle\"\nvertices = [[-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]\nmaterial = \"red\"\n",
+        mesh,
+    );
+    assert_error(
+        &e,
+        line,
+        "objects[2].path",
+        &["cannot read the OBJ file", "mesh.obj"],
+    );
+}
+
+#[test]
+fn mesh_without_a_path() {
+    let e = broken(
+        "type = \"sphere\"\ncenter = [0.0, 1.0, 0.0]\nradius = 1.0\n",
+        "type = \"mesh\"\n",
+    );
+    assert_eq!(e.path, "objects[0]");
+    assert!(
+        e.message.contains("missing field `path`: a mesh needs it"),
+        "{e}"
+    );
+}

@@ -8,8 +8,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
+use crate::scene::{Effect, Effects};
 use crate::{Image, Scene, SceneError, Stats};
 
 /// One chapter of the workbook.
@@ -23,6 +24,8 @@ pub struct Chapter {
     pub default_scene_path: &'static str,
     /// Its default scene's text (built into the binary).
     pub default_scene: &'static str,
+    /// The effects its tracer can simulate.
+    pub effects: Effects,
 }
 
 impl Chapter {
@@ -52,9 +55,28 @@ pub struct RenderArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
     pub height: Option<u32>,
 
+    /// Rays per pixel, instead of the scene's [image] samples: a square
+    /// number (1, 4, 9, 16, ...); more rays smooth the jagged edges.
+    #[arg(long, value_parser = samples)]
+    pub samples: Option<u32>,
+
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
+
+    /// Switch an effect off for a fast preview (repeat for more).
+    #[arg(long, value_enum, value_name = "EFFECT")]
+    pub without: Vec<Effect>,
+
+    /// Refuse a scene that calls for an effect this chapter cannot simulate
+    /// yet, instead of rendering what it can.
+    #[arg(long)]
+    pub strict: bool,
+
+    /// Number of threads to render with (default: one per core). The
+    /// picture is the same bytes whatever the number.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
 }
 
 impl RenderArgs {
@@ -69,7 +91,9 @@ impl RenderArgs {
         };
         let width = self.width.unwrap_or(scene.image.width);
         let height = self.height.unwrap_or(scene.image.height);
-        Ok((scene.with_size(width, height), name))
+        let mut scene = scene.with_size(width, height);
+        scene.image.samples = self.samples.unwrap_or(scene.image.samples);
+        Ok((scene, name))
     }
 
     /// Where the picture goes.
@@ -84,6 +108,75 @@ impl RenderArgs {
             None => chapter.folder.to_owned(),
         };
         PathBuf::from(format!("{stem}.png"))
+    }
+}
+
+/// Which effects a chapter simulates for a scene, and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct EffectPlan {
+    /// What the scene needs (see [`Scene::calls_for`]).
+    pub calls_for: Effects,
+    /// What the scene's `[trace] effects` and `--without` leave on.
+    pub switched_on: Effects,
+    /// What will be simulated: called for, switched on and known to the chapter.
+    pub simulated: Effects,
+    /// Called for and switched on, but introduced by a later chapter.
+    pub later: Effects,
+}
+
+impl EffectPlan {
+    pub fn new(chapter: &Chapter, scene: &Scene, without: &[Effect]) -> EffectPlan {
+        let calls_for = scene.calls_for();
+        let switched_on = scene.switched_on().minus(Effects::of(without));
+        let wanted = calls_for.and(switched_on);
+        EffectPlan {
+            calls_for,
+            switched_on,
+            simulated: wanted.and(chapter.effects),
+            later: wanted.minus(chapter.effects),
+        }
+    }
+
+    /// The scene to render: the effects the chapter knows but that are
+    /// switched off are taken out of it, so nothing is computed for them.
+    pub fn apply(&self, chapter: &Chapter, scene: Scene) -> Scene {
+        scene.without(chapter.effects.minus(self.switched_on))
+    }
+
+    /// One line for each effect called for but left to a later chapter.
+    pub fn notes(&self) -> Vec<String> {
+        self.later
+            .iter()
+            .map(|effect| {
+                let (number, folder) = effect.chapter();
+                format!("this scene calls for {effect}, introduced in chapter {number} ({folder})")
+            })
+            .collect()
+    }
+}
+
+impl std::fmt::Display for EffectPlan {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "effects called for: {}; simulated: {}",
+            self.calls_for, self.simulated
+        )?;
+        let off = self.calls_for.minus(self.switched_on);
+        if !off.is_empty() {
+            write!(f, " (switched off: {off})")?;
+        }
+        Ok(())
+    }
+}
+
+/// Parses `--samples`: a square number from 1 to 1024.
+fn samples(text: &str) -> Result<u32, String> {
+    match text.parse::<u32>() {
+        Ok(n) if crate::scene::is_square_sample_count(n) => Ok(n),
+        _ => Err(format!(
+            "expected a square number from 1 to 1024 (1, 4, 9, 16, ...), found {text:?}"
+        )),
     }
 }
 
@@ -114,18 +207,52 @@ pub struct Rendered {
 pub fn run(
     chapter: &Chapter,
     args: &RenderArgs,
-    render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats),
+    render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
 ) -> ExitCode {
-    let (scene, name) = match args.load_scene(chapter) {
+    run_loaded(chapter, args, args.load_scene(chapter), render)
+}
+
+/// [`run`] for a scene the caller has loaded (or failed to load), such as
+/// one read from another file format: `loaded` is the scene and its name.
+pub fn run_loaded(
+    chapter: &Chapter,
+    args: &RenderArgs,
+    loaded: Result<(Scene, String), SceneError>,
+    render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
+) -> ExitCode {
+    let (scene, name) = match loaded {
         Ok(loaded) => loaded,
         Err(e) => {
             eprintln!("error: {e}");
             return ExitCode::FAILURE;
         }
     };
+    let plan = EffectPlan::new(chapter, &scene, &args.without);
+    for note in plan.notes() {
+        if args.strict {
+            eprintln!("error: {note}; --strict refuses to render without it");
+            return ExitCode::FAILURE;
+        }
+        eprintln!("note: {note}; this chapter renders without it");
+    }
+    println!("{plan}");
+    let scene = plan.apply(chapter, scene);
     let bar = progress_bar(scene.image.height, args.quiet);
+    // Quick renders show no bar: it appears once a render has taken a second.
+    bar.set_draw_target(ProgressDrawTarget::hidden());
+    let shown = std::sync::Once::new();
     let start = Instant::now();
-    let (image, stats) = render(&scene, &|| bar.inc(1));
+    let on_row = || {
+        bar.inc(1);
+        if !args.quiet && start.elapsed() > Duration::from_secs(1) {
+            shown.call_once(|| bar.set_draw_target(ProgressDrawTarget::stderr()));
+        }
+    };
+    let rendered = with_threads(args.threads, || render(&scene, &on_row));
+    let Ok((image, stats)) = rendered else {
+        eprintln!("error: cannot start {:?} rendering threads", args.threads);
+        return ExitCode::FAILURE;
+    };
     let seconds = start.elapsed();
     bar.finish_and_clear();
     let out = args.output_path(chapter);
@@ -144,6 +271,22 @@ pub fn run(
         },
     );
     ExitCode::SUCCESS
+}
+
+/// Runs `work` on a pool of `threads` threads, so that every parallel loop
+/// inside it uses that many; on rayon's global pool (one thread per core)
+/// when `None`.
+pub fn with_threads<T: Send>(
+    threads: Option<u32>,
+    work: impl FnOnce() -> T + Send,
+) -> Result<T, rayon::ThreadPoolBuildError> {
+    let Some(n) = threads else {
+        return Ok(work());
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(n as usize)
+        .build()?;
+    Ok(pool.install(work))
 }
 
 /// Prints what was rendered, where, how big, how long and how many rays.

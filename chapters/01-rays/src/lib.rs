@@ -3,6 +3,8 @@
 pub use ch00_toolkit as toolkit;
 use ch00_toolkit::scene::CameraSpec;
 use ch00_toolkit::{Color, Image, Scene, Stats, Vec3};
+use rand::{RngExt, SeedableRng};
+use rand_pcg::Pcg64Mcg;
 
 /// A ray r(t) = r0 + t·rd with a unit direction, so t is a distance.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -86,19 +88,57 @@ impl Camera {
     }
 }
 
-/// Renders a scene with one primary ray per pixel: `trace` gives the colour
-/// seen along a ray. Every later chapter renders through this function and
-/// only brings a better `trace`.
+/// Where the rays of pixel (x, y) pass, in image coordinates: `samples` = N
+/// positions, one in each cell of a √N × √N grid over the pixel, at a random
+/// point inside its cell ("stratified" or "jittered" sampling: random enough
+/// to break up the stair steps of edges, even enough to leave no gaps). One
+/// sample is the pixel's centre.
+///
+/// The random numbers are seeded by the pixel's index `index`, so a pixel
+/// gets the same rays whichever thread renders it, and the picture is the
+/// same bytes every time.
+pub fn sample_positions(
+    x: u32,
+    y: u32,
+    samples: u32,
+    index: u64,
+) -> impl Iterator<Item = (f32, f32)> {
+    let side = (samples as f32).sqrt().round() as u32;
+    let mut rng = Pcg64Mcg::seed_from_u64(index);
+    (0..side * side).map(move |cell| {
+        if side == 1 {
+            return (x as f32 + 0.5, y as f32 + 0.5);
+        }
+        let (i, j) = (cell % side, cell / side);
+        let u: f32 = rng.random();
+        let v: f32 = rng.random();
+        (
+            x as f32 + (i as f32 + u) / side as f32,
+            y as f32 + (j as f32 + v) / side as f32,
+        )
+    })
+}
+
+/// Renders a scene with the scene's number of primary rays per pixel
+/// (`[image] samples`, one by default): `trace` gives the colour seen along
+/// a ray, and a pixel is the average over its rays. Every later chapter
+/// renders through this function and only brings a better `trace`.
 pub fn render(
     scene: &Scene,
     trace: impl Fn(&Ray, &mut Stats) -> Color + Sync,
     on_row: impl Fn() + Sync,
 ) -> (Image, Stats) {
     let (width, height) = (scene.image.width, scene.image.height);
+    let samples = scene.image.samples.max(1);
     let camera = Camera::new(&scene.camera, width, height);
     let pixel = |x, y, stats: &mut Stats| {
-        stats.primary += 1;
-        trace(&camera.primary_ray(x, y), stats)
+        let index = y as u64 * width as u64 + x as u64;
+        let mut sum = Color::ZERO;
+        for (px, py) in sample_positions(x, y, samples, index) {
+            stats.primary += 1;
+            sum += trace(&camera.ray_through(px, py), stats);
+        }
+        sum / samples as f32
     };
     Image::render(width, height, pixel, on_row)
 }
@@ -126,4 +166,5 @@ pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
     title: "rays and a pinhole camera",
     default_scene_path: "chapters/01-rays/scenes/default.toml",
     default_scene: include_str!("../scenes/default.toml"),
+    effects: toolkit::scene::Effects::NONE,
 };

@@ -79,3 +79,48 @@ fn snapshot_default() {
     let (image, _) = render_sky(&scene().with_size(160, 120), || {});
     assert_image("01-rays", "default", &image);
 }
+
+#[test]
+fn one_sample_is_the_pixel_centre() {
+    let positions: Vec<_> = ch01_rays::sample_positions(7, 3, 1, 99).collect();
+    assert_eq!(positions, vec![(7.5, 3.5)]);
+}
+
+#[test]
+fn samples_fill_a_grid_one_in_each_cell() {
+    for n in [4u32, 16, 64] {
+        let side = (n as f32).sqrt() as u32;
+        let mut seen = vec![0; n as usize];
+        for (px, py) in ch01_rays::sample_positions(10, 20, n, 12345) {
+            assert!(
+                (10.0..11.0).contains(&px) && (20.0..21.0).contains(&py),
+                "{px} {py}"
+            );
+            let (i, j) = (
+                ((px - 10.0) * side as f32) as u32,
+                ((py - 20.0) * side as f32) as u32,
+            );
+            seen[(j * side + i) as usize] += 1;
+        }
+        assert!(seen.iter().all(|&c| c == 1), "n = {n}: {seen:?}");
+    }
+}
+
+#[test]
+fn samples_depend_on_the_pixel_only() {
+    let a: Vec<_> = ch01_rays::sample_positions(1, 1, 16, 7).collect();
+    let b: Vec<_> = ch01_rays::sample_positions(1, 1, 16, 7).collect();
+    let c: Vec<_> = ch01_rays::sample_positions(1, 1, 16, 8).collect();
+    assert_eq!(a, b);
+    assert_ne!(a, c, "another pixel gets other jitter");
+}
+
+#[test]
+fn n_samples_trace_n_primary_rays_and_average_them() {
+    let mut scene = scene().with_size(20, 10);
+    scene.image.samples = 16;
+    let (image, stats) = render_sky(&scene, || {});
+    assert_eq!(stats.primary, 16 * 20 * 10);
+    let again = render_sky(&scene, || {}).0;
+    assert_eq!(image, again, "the same scene renders to the same picture");
+}

@@ -5,9 +5,9 @@ mod sphere;
 mod triangle;
 
 pub use ch01_rays::{Camera, Ray, render, toolkit};
-pub use plane::intersect_plane;
+pub use plane::{intersect_plane, plane_point};
 pub use sphere::{intersect_sphere, sphere_point, sphere_roots};
-pub use triangle::{intersect_triangle, triangle_normal};
+pub use triangle::{intersect_triangle, smooth_normal, triangle_normal};
 
 use toolkit::scene::{Object, Shape};
 use toolkit::{Color, Image, Scene, Stats, Vec3};
@@ -22,7 +22,16 @@ pub struct Hit {
     /// The surface's geometric unit normal at the point, as the shape defines
     /// it: outward for a sphere, n for a plane, (b − a) × (c − a) for a
     /// triangle. It may face away from the ray; shading decides what to do.
+    /// Rays leaving the surface are offset along it.
     pub normal: Vec3,
+    /// The unit normal that shading uses: the geometric `normal` for every
+    /// shape but a [`Shape::SmoothTriangle`], whose corner normals are
+    /// interpolated (see [`smooth_normal`]), on the same side as `normal`.
+    pub shading_normal: Vec3,
+    /// How far the computed `point` may lie off the true surface: a bound on
+    /// its rounding error, which grows with the size of the coordinates
+    /// involved (chapter 4 starts rays leaving the surface this far off it).
+    pub error: f32,
     /// Index of the object in the scene.
     pub object: usize,
 }
@@ -32,7 +41,7 @@ pub fn intersect(shape: &Shape, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32
     match *shape {
         Shape::Sphere { center, radius } => intersect_sphere(center, radius, ray, t_min, t_max),
         Shape::Plane { normal, offset } => intersect_plane(normal, offset, ray, t_min, t_max),
-        Shape::Triangle { vertices } => {
+        Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             intersect_triangle(vertices, ray, t_min, t_max).map(|(t, _, _)| t)
         }
     }
@@ -40,20 +49,47 @@ pub fn intersect(shape: &Shape, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32
 
 /// The hit record of `ray` meeting `shape` at distance t.
 pub fn hit_at(shape: &Shape, ray: &Ray, t: f32, object: usize) -> Hit {
-    let (point, normal) = match *shape {
+    // Each point is put back onto its surface, which bounds its error by a
+    // few units in the last place (f32::EPSILON relative) of the largest
+    // coordinate involved: the point's, and for a triangle its corners'.
+    let (point, normal, error) = match *shape {
         Shape::Sphere { center, radius } => {
             let point = sphere_point(center, radius, ray, t);
-            (point, (point - center) / radius)
+            let error = 4.0 * f32::EPSILON * (largest(point) + radius);
+            (point, (point - center) / radius, error)
         }
-        Shape::Plane { normal, .. } => (ray.at(t), normal),
-        Shape::Triangle { vertices } => (ray.at(t), triangle_normal(vertices)),
+        Shape::Plane { normal, offset } => {
+            let point = plane_point(normal, offset, ray, t);
+            (point, normal, 8.0 * f32::EPSILON * largest(point))
+        }
+        Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
+            let normal = triangle_normal(vertices);
+            let point = plane_point(normal, -normal.dot(vertices[0]), ray, t);
+            let scale = vertices
+                .iter()
+                .fold(largest(point), |m, &v| m.max(largest(v)));
+            (point, normal, 8.0 * f32::EPSILON * scale)
+        }
+    };
+    let shading_normal = match *shape {
+        Shape::SmoothTriangle { vertices, normals } => {
+            smooth_normal(vertices, normals, ray, normal)
+        }
+        _ => normal,
     };
     Hit {
         t,
         point,
         normal,
+        shading_normal,
+        error,
         object,
     }
+}
+
+/// The largest magnitude of a point's coordinates, |p|∞.
+fn largest(p: Vec3) -> f32 {
+    p.abs().max_element()
 }
 
 /// The closest hit of a ray over all objects, for t in (t_min, t_max).
@@ -110,4 +146,5 @@ pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
     title: "ray-plane, ray-sphere and ray-triangle intersection",
     default_scene_path: "chapters/02-hits/scenes/default.toml",
     default_scene: include_str!("../scenes/default.toml"),
+    effects: toolkit::scene::Effects::NONE,
 };

@@ -24,3 +24,16 @@ pub fn intersect_plane(
     let t = -(normal.dot(ray.origin) + offset) / denominator;
     (t.is_finite() && t > t_min && t < t_max).then_some(t)
 }
+
+/// The point of the plane n·x + d = 0 hit at distance t, put back onto the
+/// plane.
+///
+/// r0 + t·rd carries the rounding error of a long sum: far from the eye it
+/// can lie a little off the plane, on either side. Moving it along n by its
+/// computed distance from the plane, p − (n·p + d)·n, leaves an error of a
+/// few units in the last place of p's own coordinates. (Chapter 4 starts
+/// shadow rays just off the surface, by an amount that relies on this.)
+pub fn plane_point(normal: Vec3, offset: f32, ray: &Ray, t: f32) -> Vec3 {
+    let p = ray.at(t);
+    p - (normal.dot(p) + offset) * normal
+}

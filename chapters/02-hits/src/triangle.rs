@@ -78,3 +78,21 @@ fn edge_f64(px: f32, py: f32, qx: f32, qy: f32) -> f32 {
 pub fn triangle_normal([a, b, c]: [Vec3; 3]) -> Vec3 {
     (b - a).cross(c - a).normalize()
 }
+
+/// The shading normal of a smooth triangle where `ray` hits it: the corner
+/// normals blended with the hit's barycentric weights,
+/// n = normalise((1 − α − β)·n_a + α·n_b + β·n_c) (Phong's normal
+/// interpolation), turned to the side of the geometric normal `geometric`,
+/// since shading decides front and back by that one. Falls back to the
+/// geometric normal if the blend vanishes.
+pub fn smooth_normal(vertices: [Vec3; 3], normals: [Vec3; 3], ray: &Ray, geometric: Vec3) -> Vec3 {
+    let Some((_, alpha, beta)) =
+        intersect_triangle(vertices, ray, f32::NEG_INFINITY, f32::INFINITY)
+    else {
+        return geometric;
+    };
+    let [na, nb, nc] = normals;
+    let blend = (1.0 - alpha - beta) * na + alpha * nb + beta * nc;
+    let n = blend.normalize_or(geometric);
+    if n.dot(geometric) < 0.0 { -n } else { n }
+}

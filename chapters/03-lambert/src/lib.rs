@@ -12,9 +12,9 @@ use toolkit::{Color, Image, Scene, Stats, Vec3};
 #[derive(Debug, Clone, Copy)]
 pub struct Surface<'a> {
     pub hit: Hit,
-    /// The unit normal turned to face the incoming ray. Every surface is
-    /// two-sided: the back of a plane or triangle (and the inside of a
-    /// sphere) is shaded like its front, seen from where the eye is.
+    /// The unit shading normal turned to face the incoming ray. Every
+    /// surface is two-sided: the back of a plane or triangle (and the inside
+    /// of a sphere) is shaded like its front, seen from where the eye is.
     pub normal: Vec3,
     /// Unit vector from the point back along the ray (towards the eye).
     pub to_eye: Vec3,
@@ -23,11 +23,15 @@ pub struct Surface<'a> {
 
 impl<'a> Surface<'a> {
     /// The surface seen by `ray` at `hit`.
+    ///
+    /// Which side the ray sees is decided by the geometric normal (the
+    /// surface's true orientation); the shading normal, on the same side as
+    /// it, is turned with it. (For flat shapes the two are the same.)
     pub fn new(scene: &'a Scene, hit: Hit, ray: &Ray) -> Surface<'a> {
         let facing = if hit.normal.dot(ray.direction) > 0.0 {
-            -hit.normal
+            -hit.shading_normal
         } else {
-            hit.normal
+            hit.shading_normal
         };
         Surface {
             hit,
@@ -51,8 +55,9 @@ pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
 ///
 /// Ambient light adds albedo × ambient colour. Every other light adds
 /// `reflect(incoming)` if it is in front of the surface (n·l > 0) and
-/// `visible(surface, incoming)` says nothing blocks it. Nothing is asked of a
-/// light behind the surface or outside its cone: it could add nothing.
+/// `visible(surface, incoming)` says nothing blocks it. `visible` is not even
+/// asked about a light that could add nothing: one behind the surface,
+/// outside its cone, or whose reflection is zero (a black mirror).
 ///
 /// This chapter passes [`always_visible`] and [`lambert`]; chapter 4 passes a
 /// shadow ray, chapter 5 adds a highlight to `reflect`.
@@ -67,9 +72,12 @@ pub fn direct_light(
         match arrival(light, surface.hit.point) {
             Arrival::Ambient(ambient) => color += surface.material.color * ambient,
             Arrival::From(incoming) => {
-                let in_front = surface.normal.dot(incoming.direction) > 0.0;
-                if in_front && visible(surface, &incoming) {
-                    color += reflect(&incoming);
+                if surface.normal.dot(incoming.direction) <= 0.0 {
+                    continue; // behind the surface
+                }
+                let light = reflect(&incoming);
+                if light != Color::ZERO && visible(surface, &incoming) {
+                    color += light;
                 }
             }
             Arrival::Dark => {}
@@ -108,4 +116,7 @@ pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
     title: "Lambert shading with ambient, point and spot lights",
     default_scene_path: "chapters/03-lambert/scenes/default.toml",
     default_scene: include_str!("../scenes/default.toml"),
+    effects: toolkit::scene::Effects::NONE
+        .with(toolkit::scene::Effect::Lambert)
+        .with(toolkit::scene::Effect::Spot),
 };

@@ -1,5 +1,6 @@
 #![doc = include_str!("../README.md")]
 
+pub mod forward;
 mod offset;
 
 pub use ch03_lambert::{
@@ -27,7 +28,7 @@ pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: Origin) -> (Ra
     let point = surface.hit.point;
     let light = point + incoming.direction * incoming.distance;
     let start = match origin {
-        Origin::Offset => offset_origin(point, surface.hit.normal, incoming.direction),
+        Origin::Offset => offset_origin(&surface.hit, incoming.direction),
         Origin::HitPoint => point,
     };
     let ray = Ray {
@@ -130,4 +131,7 @@ pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
     title: "shadow rays",
     default_scene_path: "chapters/04-shadows/scenes/default.toml",
     default_scene: include_str!("../scenes/default.toml"),
+    effects: ch03_lambert::CHAPTER
+        .effects
+        .with(toolkit::scene::Effect::Shadows),
 };

@@ -157,4 +157,7 @@ pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
     title: "specular reflection",
     default_scene_path: "chapters/05-reflection/scenes/default.toml",
     default_scene: include_str!("../scenes/default.toml"),
+    effects: ch04_shadows::CHAPTER
+        .effects
+        .with(toolkit::scene::Effect::Reflection),
 };

@@ -20,7 +20,7 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
         return None;
     }
     let direction = reflect(incoming.direction, surface.normal).normalize();
-    let origin = offset_origin(surface.hit.point, surface.hit.normal, direction);
+    let origin = offset_origin(&surface.hit, direction);
     Some(Secondary {
         ray: Ray { origin, direction },
         weight,

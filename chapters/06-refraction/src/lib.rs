@@ -64,7 +64,7 @@ pub fn refracted_ray(surface: &Surface, direction: Vec3, weight: Color) -> Optio
     if weight == Color::ZERO {
         return None;
     }
-    let origin = offset_origin(surface.hit.point, surface.hit.normal, direction);
+    let origin = offset_origin(&surface.hit, direction);
     Some(Secondary {
         ray: Ray { origin, direction },
         weight,
@@ -112,4 +112,7 @@ pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
     title: "refraction by Snell's law",
     default_scene_path: "chapters/06-refraction/scenes/default.toml",
     default_scene: include_str!("../scenes/default.toml"),
+    effects: ch05_reflection::CHAPTER
+        .effects
+        .with(toolkit::scene::Effect::Refraction),
 };

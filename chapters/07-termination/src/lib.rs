@@ -2,7 +2,7 @@
 
 pub use ch06_refraction::{
     Camera, Glass, Hit, Kind, Mirrors, Path, Ray, Secondary, Surface, Whitted, World, closest_hit,
-    render, render_whitted, toolkit, trace,
+    offset_origin, reflect, refract, render, render_whitted, schlick, toolkit, trace,
 };
 
 use toolkit::{Color, Image, Scene, Stats};
@@ -76,4 +76,5 @@ pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
     title: "termination criteria",
     default_scene_path: "chapters/07-termination/scenes/default.toml",
     default_scene: include_str!("../scenes/default.toml"),
+    effects: ch06_refraction::CHAPTER.effects,
 };

@@ -79,6 +79,8 @@ struct ImageFile {
     height: Side,
     #[serde(default)]
     background: Rgb,
+    #[serde(default)]
+    samples: Samples,
 }
 
 #[derive(Deserialize)]
@@ -169,6 +171,7 @@ enum ObjectKind {
     Sphere,
     Plane,
     Triangle,
+    Mesh,
 }
 
 /// Every field any object may have; [`ObjectFile::shape`] picks its own.
@@ -182,6 +185,8 @@ struct ObjectFile {
     normal: Option<Direction>,
     offset: Option<Number>,
     vertices: Option<Corners>,
+    /// A mesh's OBJ file, relative to the scene file.
+    path: Option<Spanned<String>>,
     material: Spanned<String>,
     shadows: Option<bool>,
 }
@@ -210,7 +215,8 @@ impl SceneFile {
             .iter()
             .enumerate()
             .map(|(i, object)| object_from_record(object, i, &names, check))
-            .collect::<Result<Vec<_>, _>>()?;
+            .collect::<Result<Vec<_>, _>>()?
+            .concat();
         let lights = self
             .lights
             .iter()
@@ -228,6 +234,7 @@ impl SceneFile {
                 width: self.image.width.0,
                 height: self.image.height.0,
                 background: self.image.background.0,
+                samples: self.image.samples.0,
             },
             trace: TraceSpec {
                 max_depth: self.trace.max_depth.0,
@@ -326,7 +333,7 @@ fn object_from_record(
     index: usize,
     materials: &[&String],
     check: &Checker,
-) -> Result<Object, SceneError> {
+) -> Result<Vec<Object>, SceneError> {
     let path = format!("objects[{index}]");
     let r = Record {
         span: record.span(),
@@ -334,32 +341,34 @@ fn object_from_record(
         check,
     };
     let o = record.get_ref();
-    let shape = match o.kind {
+    let shapes = match o.kind {
         ObjectKind::Sphere => {
             let extra = [
                 ("normal", o.normal.is_some()),
                 ("offset", o.offset.is_some()),
                 ("vertices", o.vertices.is_some()),
+                ("path", o.path.is_some()),
             ];
             let takes = "center, radius, material, shadows";
             r.refuse(&extra, "sphere", takes)?;
-            Shape::Sphere {
+            vec![Shape::Sphere {
                 center: r.need(o.center.map(|c| c.0), "center", "sphere")?,
                 radius: r.need(o.radius.map(|r| r.0), "radius", "sphere")?,
-            }
+            }]
         }
         ObjectKind::Plane => {
             let extra = [
                 ("center", o.center.is_some()),
                 ("radius", o.radius.is_some()),
                 ("vertices", o.vertices.is_some()),
+                ("path", o.path.is_some()),
             ];
             let takes = "normal, offset, material, shadows";
             r.refuse(&extra, "plane", takes)?;
-            plane(
+            vec![plane(
                 r.need(o.normal, "normal", "plane")?,
                 r.need(o.offset.map(|d| d.0), "offset", "plane")?,
-            )
+            )]
         }
         ObjectKind::Triangle => {
             let extra = [
@@ -367,12 +376,25 @@ fn object_from_record(
                 ("radius", o.radius.is_some()),
                 ("normal", o.normal.is_some()),
                 ("offset", o.offset.is_some()),
+                ("path", o.path.is_some()),
             ];
             let takes = "vertices, material, shadows";
             r.refuse(&extra, "triangle", takes)?;
-            Shape::Triangle {
+            vec![Shape::Triangle {
                 vertices: r.need(o.vertices.map(|v| v.0), "vertices", "triangle")?,
-            }
+            }]
+        }
+        ObjectKind::Mesh => {
+            let extra = [
+                ("center", o.center.is_some()),
+                ("radius", o.radius.is_some()),
+                ("normal", o.normal.is_some()),
+                ("offset", o.offset.is_some()),
+                ("vertices", o.vertices.is_some()),
+            ];
+            r.refuse(&extra, "mesh", "path, material, shadows")?;
+            let file = r.need(o.path.as_ref(), "path", "mesh")?;
+            mesh(file, &format!("{path}.path"), check)?
         }
     };
     let name = o.material.get_ref();
@@ -389,10 +411,22 @@ fn object_from_record(
             format!("unknown material `{name}`; {known}"),
         ));
     };
-    Ok(Object {
+    let shadows = o.shadows.unwrap_or(true);
+    let object = |shape| Object {
         shape,
         material,
-        shadows: o.shadows.unwrap_or(true),
+        shadows,
+    };
+    Ok(shapes.into_iter().map(object).collect())
+}
+
+/// The triangles of a mesh's OBJ file, found relative to the scene file.
+fn mesh(file: &Spanned<String>, path: &str, check: &Checker) -> Result<Vec<Shape>, SceneError> {
+    let scene_dir = std::path::Path::new(check.file).parent();
+    let obj = scene_dir.map_or_else(|| file.get_ref().into(), |d| d.join(file.get_ref()));
+    super::mesh::load_obj(&obj).map_err(|message| {
+        let message = format!("{message} ({})", obj.display());
+        check.error(file.span(), path.to_owned(), message)
     })
 }
 
@@ -597,6 +631,36 @@ impl<'de> Deserialize<'de> for Side {
         }
         Ok(Side(x as u32))
     }
+}
+
+/// Rays per pixel: a square number (1, 4, 9, 16, ...) up to 1024, so that
+/// a pixel splits into a √N × √N grid of cells, one ray in each.
+#[derive(Clone, Copy)]
+struct Samples(u32);
+
+impl Default for Samples {
+    fn default() -> Self {
+        Samples(1)
+    }
+}
+
+impl<'de> Deserialize<'de> for Samples {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let n = i64::deserialize(d)?;
+        match u32::try_from(n) {
+            Ok(n) if is_square_sample_count(n) => Ok(Samples(n)),
+            _ => Err(de::Error::custom(format!(
+                "samples per pixel must be a square number from 1 to 1024 \
+                 (1, 4, 9, 16, ...); found {n}"
+            ))),
+        }
+    }
+}
+
+/// Is `n` one of 1, 4, 9, ..., 1024?
+pub fn is_square_sample_count(n: u32) -> bool {
+    let side = (n as f64).sqrt().round() as u32;
+    (1..=1024).contains(&n) && side * side == n
 }
 
 /// A recursion depth: 0 to 64.

@@ -5,11 +5,15 @@
 //! not use it. Everything here has been validated: finite numbers, unit
 //! normals, positive radii, triangles with area, known material names.
 
+mod effects;
 mod error;
 mod file;
+mod mesh;
 
+pub use file::is_square_sample_count;
 use std::path::Path;
 
+pub use effects::Effects;
 pub use error::SceneError;
 use glam::Vec3;
 
@@ -45,6 +49,8 @@ pub struct ImageSpec {
     pub height: u32,
     /// The colour of a ray that hits nothing.
     pub background: Color,
+    /// Rays per pixel (anti-aliasing, chapter 1): a square number.
+    pub samples: u32,
 }
 
 /// Chapter 7's termination criteria and the effects switched on.
@@ -59,7 +65,9 @@ pub struct TraceSpec {
 }
 
 /// The effects a tracer can simulate, each introduced by one chapter.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Deserialize, clap::ValueEnum,
+)]
 #[serde(rename_all = "lowercase")]
 pub enum Effect {
     Lambert,
@@ -144,6 +152,13 @@ pub enum Shape {
     Triangle {
         vertices: [Vec3; 3],
     },
+    /// A triangle of a smooth mesh (NFF `pp` patches, OBJ files with vertex
+    /// normals): the surface is flat, but shading interpolates these unit
+    /// normals at the corners, so that a mesh of flat facets looks curved.
+    SmoothTriangle {
+        vertices: [Vec3; 3],
+        normals: [Vec3; 3],
+    },
 }
 
 impl Scene {
@@ -180,7 +195,9 @@ impl Scene {
                 Shape::Sphere { center, .. } => *center += offset,
                 // n·(x − o) + d = 0, so the new offset is d − n·o.
                 Shape::Plane { normal, offset: d } => *d -= normal.dot(offset),
-                Shape::Triangle { vertices } => vertices.iter_mut().for_each(|v| *v += offset),
+                Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
+                    vertices.iter_mut().for_each(|v| *v += offset)
+                }
             }
         }
         self

@@ -1,0 +1,57 @@
+//! The chapter binary tells a student when a scene needs a later chapter.
+
+use std::process::Command;
+
+fn run(args: &[&str]) -> std::process::Output {
+    let out = std::env::temp_dir().join(format!("ch03-cli-{}.png", std::process::id()));
+    let output = Command::new(env!("CARGO_BIN_EXE_ch03-lambert"))
+        .args(args)
+        .args(["--width", "16", "--height", "12", "-q", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let _ = std::fs::remove_file(out);
+    output
+}
+
+const GLASS: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../06-refraction/scenes/default.toml"
+);
+
+#[test]
+fn a_scene_from_a_later_chapter_renders_with_a_note() {
+    let output = run(&[GLASS]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{stderr}");
+    assert!(
+        stderr.contains(
+            "this scene calls for refraction, introduced in chapter 6 (chapters/06-refraction)"
+        ),
+        "{stderr}"
+    );
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(stdout.contains("simulated: lambert"), "{stdout}");
+}
+
+#[test]
+fn strict_makes_it_an_error() {
+    let output = run(&[GLASS, "--strict"]);
+    assert!(!output.status.success());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("error: this scene calls for"), "{stderr}");
+}
+
+#[test]
+fn a_bad_scene_fails_with_file_and_line() {
+    let bad = std::env::temp_dir().join(format!("ch03-bad-{}.toml", std::process::id()));
+    std::fs::write(&bad, "[camera]\neye = [0, 0]\n").unwrap();
+    let output = run(&[bad.to_str().unwrap()]);
+    let _ = std::fs::remove_file(&bad);
+    assert!(!output.status.success());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains(":2:7: camera.eye: expected three numbers"),
+        "{stderr}"
+    );
+}
