@@ -17,7 +17,9 @@ pub use ch07_termination::toolkit;
 
 pub mod accuracy;
 pub mod bench;
+pub mod handout;
 pub mod nff;
+pub mod progress;
 pub mod verify;
 
 use toolkit::cli::Chapter;

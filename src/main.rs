@@ -31,6 +31,12 @@ enum Command {
     /// Checks a picture made by your own tracer, in any language, against a
     /// chapter's reference picture.
     Verify(raybook::verify::VerifyArgs),
+    /// Writes a copy of the workbook for a student, with the exercises'
+    /// solutions replaced by todo!("hint").
+    Handout(raybook::handout::HandoutArgs),
+    /// Runs each chapter's tests in order and shows where you are: passed,
+    /// failed, the first failing snapshot, and what to do next.
+    Progress(raybook::progress::ProgressArgs),
 }
 
 fn main() -> ExitCode {
@@ -44,6 +50,8 @@ fn main() -> ExitCode {
         Some(Command::Bench(args)) => raybook::bench::run(&args),
         Some(Command::Accuracy(args)) => raybook::accuracy::main(&args),
         Some(Command::Verify(args)) => raybook::verify::main(&args),
+        Some(Command::Handout(args)) => raybook::handout::main(&args),
+        Some(Command::Progress(args)) => raybook::progress::main(&args),
         None => {
             let args = RenderArgs {
                 output: Some("raybook.png".into()),

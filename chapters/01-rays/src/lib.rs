@@ -27,7 +27,9 @@ impl Ray {
 
     /// The point r(t) = r0 + t·rd.
     pub fn at(&self, t: f32) -> Vec3 {
+        // EXERCISE(ch01-at): return the point r0 + t·rd (origin plus t times direction)
         self.origin + t * self.direction
+        // END EXERCISE
     }
 }
 
@@ -77,9 +79,11 @@ impl Camera {
     /// (x + 0.5, y + 0.5)). It is cast backwards: from the eye into the
     /// scene, the opposite way to the light that makes the picture.
     pub fn ray_through(&self, px: f32, py: f32) -> Ray {
+        // EXERCISE(ch01-ray-through): map (px, py) to s in [-half_width, half_width] and t in [-half_height, half_height] (y down), then Ray::new(eye, forward + s·right + t·up)
         let s = (2.0 * px / self.width as f32 - 1.0) * self.half_width;
         let t = (1.0 - 2.0 * py / self.height as f32) * self.half_height;
         Ray::new(self.eye, self.forward + s * self.right + t * self.up)
+        // END EXERCISE
     }
 
     /// The primary ray of pixel (x, y): through the pixel's centre.
@@ -104,11 +108,12 @@ pub fn sample_positions(
     index: u64,
 ) -> impl Iterator<Item = (f32, f32)> {
     let side = (samples as f32).sqrt().round() as u32;
-    let mut rng = Pcg64Mcg::seed_from_u64(index);
+    // One sample needs no random numbers: it is the centre.
+    let mut rng = (side > 1).then(|| Pcg64Mcg::seed_from_u64(index));
     (0..side * side).map(move |cell| {
-        if side == 1 {
+        let Some(rng) = rng.as_mut() else {
             return (x as f32 + 0.5, y as f32 + 0.5);
-        }
+        };
         let (i, j) = (cell % side, cell / side);
         let u: f32 = rng.random();
         let v: f32 = rng.random();

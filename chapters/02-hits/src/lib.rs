@@ -97,6 +97,7 @@ fn largest(p: Vec3) -> f32 {
 /// Each object is tested with the nearest hit so far as the upper bound, so
 /// an object behind it is rejected without more work.
 pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+    // EXERCISE(ch02-closest): intersect every object with the nearest t so far as t_max; return hit_at(...) of the nearest, or None
     let mut closest: Option<(f32, usize)> = None;
     for (index, object) in objects.iter().enumerate() {
         let bound = closest.map_or(t_max, |(t, _)| t);
@@ -105,6 +106,7 @@ pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Opt
         }
     }
     closest.map(|(t, index)| hit_at(&objects[index].shape, ray, t, index))
+    // END EXERCISE
 }
 
 /// What the chapter-2 picture shows at each hit.

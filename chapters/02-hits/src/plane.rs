@@ -17,12 +17,14 @@ pub fn intersect_plane(
     t_min: f32,
     t_max: f32,
 ) -> Option<f32> {
+    // EXERCISE(ch02-plane): t = -(n·r0 + d) / (n·rd); no hit if n·rd = 0, t is not finite or t is outside (t_min, t_max)
     let denominator = normal.dot(ray.direction);
     if denominator == 0.0 {
         return None;
     }
     let t = -(normal.dot(ray.origin) + offset) / denominator;
     (t.is_finite() && t > t_min && t < t_max).then_some(t)
+    // END EXERCISE
 }
 
 /// The point of the plane n·x + d = 0 hit at distance t, put back onto the

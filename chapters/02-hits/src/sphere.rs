@@ -30,6 +30,7 @@ use crate::toolkit::Vec3;
 /// f64 every f32 input and every product of two of them is exact, r0 − c
 /// nearly so, and the stable formula keeps that precision to the end.
 pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> {
+    // EXERCISE(ch02-sphere): solve t² + 2bt + c' = 0 with f = r0 - c, b = f·rd, c' = f·f - r²; None if the discriminant is negative; both roots, nearest first
     let f = ray.origin.as_dvec3() - center.as_dvec3();
     let d = ray.direction.as_dvec3();
     let r = radius as f64;
@@ -42,6 +43,7 @@ pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> 
     let q = -b - discriminant.sqrt().copysign(b);
     let (t0, t1) = ((c / q) as f32, (q / a) as f32);
     Some((t0.min(t1), t0.max(t1)))
+    // END EXERCISE
 }
 
 /// The nearest distance in (t_min, t_max) at which the ray hits the sphere.

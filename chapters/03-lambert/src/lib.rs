@@ -46,8 +46,10 @@ impl<'a> Surface<'a> {
 /// 1/cos θ times the area, so a matte surface sends back
 /// albedo × radiance × max(0, n·l).
 pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
+    // EXERCISE(ch03-lambert): albedo × radiance × max(0, n·l), with n = surface.normal and l = incoming.direction
     let cos_theta = surface.normal.dot(incoming.direction).max(0.0);
     surface.material.color * incoming.radiance * cos_theta
+    // END EXERCISE
 }
 
 /// The light that reaches the eye from `surface`, summed over all lights,

@@ -84,6 +84,7 @@ fn from_point(position: Vec3, power: Color, casts_shadows: bool, point: Vec3) ->
 /// light): 1 within `inner` degrees of the axis, 0 beyond `outer`, and a
 /// smooth step (3s² − 2s³) of the cosine in between, so the edge has no seam.
 pub fn spot_factor(axis: Vec3, inner_degrees: f32, outer_degrees: f32, ray: Vec3) -> f32 {
+    // EXERCISE(ch03-spot): compare axis·ray with the cosines of the two angles: 1 inside inner, 0 outside outer, smooth step 3s² - 2s³ between
     let cos_angle = axis.dot(ray);
     let cos_inner = inner_degrees.to_radians().cos();
     let cos_outer = outer_degrees.to_radians().cos();
@@ -95,4 +96,5 @@ pub fn spot_factor(axis: Vec3, inner_degrees: f32, outer_degrees: f32, ray: Vec3
     }
     let s = (cos_angle - cos_outer) / (cos_inner - cos_outer);
     s * s * (3.0 - 2.0 * s)
+    // END EXERCISE
 }

@@ -41,10 +41,12 @@ pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: Origin) -> (Ra
 /// Is any shadow-casting object hit for t in (t_min, t_max)? Unlike
 /// `closest_hit`, the first blocker found is enough: we stop there.
 pub fn any_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
+    // EXERCISE(ch04-any-hit): true as soon as one object with shadows = true is hit in (t_min, t_max) (use intersect)
     objects
         .iter()
         .filter(|object| object.shadows)
         .any(|object| intersect(&object.shape, ray, t_min, t_max).is_some())
+    // END EXERCISE
 }
 
 /// What rays are traced against. The two questions a tracer asks of its
@@ -76,12 +78,14 @@ pub fn light_is_free(
     origin: Origin,
     stats: &mut Stats,
 ) -> bool {
+    // EXERCISE(ch04-light-is-free): free if the light casts no shadows; else count stats.shadow, build shadow_ray(...) and ask world.any_hit up to the light's distance
     if !incoming.casts_shadows {
         return true;
     }
     stats.shadow += 1;
     let (ray, distance) = shadow_ray(surface, incoming, origin);
     !world.any_hit(&ray, 0.0, distance)
+    // END EXERCISE
 }
 
 /// The light reaching the eye from a surface: chapter 3's `direct_light`,

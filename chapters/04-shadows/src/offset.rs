@@ -22,10 +22,12 @@ use crate::toolkit::Vec3;
 /// than needed. (The same idea as pbrt's error bounds; Wächter and Binder,
 /// Ray Tracing Gems chapter 6, do it in units in the last place.)
 pub fn offset_origin(hit: &Hit, towards: Vec3) -> Vec3 {
+    // EXERCISE(ch04-offset): move hit.point by hit.error along hit.normal, to the side that `towards` points to
     let side = if hit.normal.dot(towards) < 0.0 {
         -1.0
     } else {
         1.0
     };
     hit.point + side * hit.error * hit.normal
+    // END EXERCISE
 }

@@ -111,6 +111,11 @@ pub fn trace(
     };
     let surface = Surface::new(scene, hit, ray);
     let mut color = tracer.local(scene, world, &surface, stats);
+    // A matte, opaque surface spawns no secondary ray at all: don't ask.
+    let material = surface.material;
+    if material.reflectance == Color::ZERO && material.transparency == 0.0 {
+        return color;
+    }
     for secondary in tracer.secondary_rays(&surface, ray).into_iter().flatten() {
         let next = Path {
             depth: path.depth + 1,

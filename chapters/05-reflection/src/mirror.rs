@@ -9,7 +9,9 @@ use crate::{Incoming, Kind, Ray, Secondary, Surface, offset_origin};
 /// The component of d along n flips sign and the rest is kept, so the angle
 /// out equals the angle in, and |d_o| = |d_i|.
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
+    // EXERCISE(ch05-reflect): d_o = d_i - 2(d_i·n)n
     d - 2.0 * d.dot(n) * n
+    // END EXERCISE
 }
 
 /// The mirror ray leaving `surface` for a ray that arrived along `incoming`,
@@ -35,6 +37,7 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
 /// A mirror ray is a single direction and never hits a point light, which
 /// has no size; the highlight puts the light's reflection back in.
 pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
+    // EXERCISE(ch05-highlight): h = normalise(l + to_eye); specular × radiance × max(0, n·h)^shininess (zero if specular is 0)
     let material = surface.material;
     if material.specular == 0.0 {
         return Color::ZERO;
@@ -42,4 +45,5 @@ pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
     let halfway = (incoming.direction + surface.to_eye).normalize_or_zero();
     let cos = surface.normal.dot(halfway).max(0.0);
     material.specular * incoming.radiance * cos.powf(material.shininess)
+    // END EXERCISE
 }

@@ -49,6 +49,7 @@ impl Whitted for Tracer {
     }
 
     fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
+        // EXERCISE(ch07-may-trace): false (and count stats.ended_max_depth) beyond max_depth; false (and count stats.ended_threshold) if every channel of weight < min_weight; else true
         if depth > self.termination.max_depth {
             stats.ended_max_depth += 1;
             false
@@ -58,6 +59,7 @@ impl Whitted for Tracer {
         } else {
             true
         }
+        // END EXERCISE
     }
 }
 
