@@ -367,3 +367,9 @@ fn mesh_without_a_path() {
         "{e}"
     );
 }
+
+#[test]
+fn samples_that_are_not_a_square_number() {
+    let e = broken("height = 48", "height = 48\nsamples = 5");
+    assert_error(&e, 11, "image.samples", &["square number", "found 5"]);
+}
