@@ -195,8 +195,19 @@ pub fn hand_out(source: &str, select: impl Fn(&Region) -> bool) -> Result<String
     Ok(out)
 }
 
-/// The root of the cargo workspace that holds `start`: the nearest folder,
-/// from `start` upwards, whose Cargo.toml has a `[workspace]` table.
+/// The workspace that holds the current folder, or an error saying so.
+pub fn current_workspace() -> Result<PathBuf, String> {
+    let here = std::env::current_dir().map_err(|e| format!("no current folder: {e}"))?;
+    workspace_root(&here).ok_or_else(|| {
+        format!(
+            "{} is not inside the raybook workspace (no Cargo.toml with [workspace] above it)",
+            here.display()
+        )
+    })
+}
+
+/// The workspace root at or above `start`: the first folder whose
+/// Cargo.toml has a `[workspace]` table.
 pub fn workspace_root(start: &Path) -> Option<PathBuf> {
     start.ancestors().find_map(|dir| {
         let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).ok()?;
@@ -374,13 +385,7 @@ pub fn main(args: &HandoutArgs) -> ExitCode {
 }
 
 fn run(args: &HandoutArgs) -> Result<(), String> {
-    let here = std::env::current_dir().map_err(|e| format!("no current folder: {e}"))?;
-    let root = workspace_root(&here).ok_or_else(|| {
-        format!(
-            "{} is not inside the raybook workspace (no Cargo.toml with [workspace] above it)",
-            here.display()
-        )
-    })?;
+    let root = current_workspace()?;
     let dir = &args.dir;
     if let Ok(mut entries) = std::fs::read_dir(dir)
         && entries.next().is_some()

@@ -14,7 +14,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
-use crate::handout::{Region, workspace_regions, workspace_root};
+use crate::handout::{Region, current_workspace, workspace_regions};
 
 /// What one `cargo test` run printed, in the parts that matter here.
 #[derive(Debug, Default, Clone, PartialEq, Eq)]
@@ -341,13 +341,7 @@ pub fn main(args: &ProgressArgs) -> ExitCode {
 
 /// Prints the table; true if every chapter run passed.
 fn progress(args: &ProgressArgs) -> Result<bool, String> {
-    let here = std::env::current_dir().map_err(|e| format!("no current folder: {e}"))?;
-    let root = workspace_root(&here).ok_or_else(|| {
-        format!(
-            "{} is not inside the raybook workspace (no Cargo.toml with [workspace] above it)",
-            here.display()
-        )
-    })?;
+    let root = current_workspace()?;
     let regions = workspace_regions(&root)?;
     let mut rows = Vec::new();
     let mut failing = false;
