@@ -95,8 +95,7 @@ impl Path {
 /// The colour seen along `ray`, traced against `world`.
 ///
 /// The background if the ray hits nothing; otherwise the hit's local light
-/// plus, for each secondary ray that may be traced, its weight times the
-/// colour seen along it (found by calling `trace` again: the recursion).
+/// plus what its secondary rays see.
 pub fn trace(
     tracer: &impl Whitted,
     scene: &Scene,
@@ -110,13 +109,33 @@ pub fn trace(
         return scene.image.background;
     };
     let surface = Surface::new(scene, hit, ray);
-    let mut color = tracer.local(scene, world, &surface, stats);
+    let local = tracer.local(scene, world, &surface, stats);
     // A matte, opaque surface spawns no secondary ray at all: don't ask.
     let material = surface.material;
     if material.reflectance == Color::ZERO && material.transparency == 0.0 {
-        return color;
+        return local;
     }
-    for secondary in tracer.secondary_rays(&surface, ray).into_iter().flatten() {
+    local + follow_secondary_rays(tracer, scene, world, &surface, ray, path, stats)
+}
+
+/// The light that reaches `surface` along its secondary rays: for each one
+/// that may be traced, its weight times the colour seen along it, found by
+/// calling `trace` again (the recursion).
+fn follow_secondary_rays(
+    tracer: &impl Whitted,
+    scene: &Scene,
+    world: &(impl World + ?Sized),
+    surface: &Surface,
+    incoming: &Ray,
+    path: Path,
+    stats: &mut Stats,
+) -> Color {
+    let mut color = Color::ZERO;
+    for secondary in tracer
+        .secondary_rays(surface, incoming)
+        .into_iter()
+        .flatten()
+    {
         let next = Path {
             depth: path.depth + 1,
             weight: path.weight * secondary.weight,
