@@ -320,3 +320,33 @@ fn no_scene_in_the_repository_renders_a_nan() {
     }
     assert!(count >= 10, "walked {count} scenes");
 }
+
+/// Case 5, found by the proptest above: a sliver triangle (its edges 0.6°
+/// apart) whose hit point, put onto its plane through one corner, was off by
+/// more than its error bound, so a ray leaving it hit it again at t = 6e-5.
+/// Hit points on triangles are now weighted means of the corners.
+#[test]
+fn leaving_a_sliver_triangle() {
+    let vertices = [
+        Vec3::new(-75.65727, 82.08872, -36.564102),
+        Vec3::new(86.355515, -83.519104, 55.92031),
+        Vec3::new(34.07345, -35.79364, 27.945518),
+    ];
+    let [a, b, c] = vertices;
+    let triangle = object(Shape::Triangle { vertices });
+    let target = a + 0.05 * (b - a) + 0.756_085 * (c - a);
+    let hit = closest_hit(
+        std::slice::from_ref(&triangle),
+        &Ray::new(Vec3::ZERO, target),
+        0.0,
+        f32::INFINITY,
+    )
+    .expect("the ray aims at the triangle");
+    let side = if hit.normal.z < 0.0 { 1.0 } else { -1.0 };
+    let out = Vec3::new(0.0, 0.0, -side);
+    let leave = Ray {
+        origin: offset_origin(&hit, out),
+        direction: out,
+    };
+    assert_eq!(intersect(&triangle.shape, &leave, 0.0, f32::INFINITY), None);
+}

@@ -7,7 +7,9 @@ mod triangle;
 pub use ch01_rays::{Camera, Ray, render, toolkit};
 pub use plane::{intersect_plane, plane_point};
 pub use sphere::{intersect_sphere, sphere_point, sphere_roots};
-pub use triangle::{intersect_triangle, smooth_normal, triangle_normal};
+pub use triangle::{
+    barycentrics, intersect_triangle, smooth_normal, triangle_normal, triangle_point,
+};
 
 use toolkit::scene::{Object, Shape};
 use toolkit::{Color, Image, Scene, Stats, Vec3};
@@ -64,7 +66,7 @@ pub fn hit_at(shape: &Shape, ray: &Ray, t: f32, object: usize) -> Hit {
         }
         Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             let normal = triangle_normal(vertices);
-            let point = plane_point(normal, -normal.dot(vertices[0]), ray, t);
+            let point = triangle_point(vertices, barycentrics(vertices, ray));
             let scale = vertices
                 .iter()
                 .fold(largest(point), |m, &v| m.max(largest(v)));
@@ -73,7 +75,7 @@ pub fn hit_at(shape: &Shape, ray: &Ray, t: f32, object: usize) -> Hit {
     };
     let shading_normal = match *shape {
         Shape::SmoothTriangle { vertices, normals } => {
-            smooth_normal(vertices, normals, ray, normal)
+            smooth_normal(normals, barycentrics(vertices, ray), normal)
         }
         _ => normal,
     };

@@ -79,18 +79,33 @@ pub fn triangle_normal([a, b, c]: [Vec3; 3]) -> Vec3 {
     (b - a).cross(c - a).normalize()
 }
 
-/// The shading normal of a smooth triangle where `ray` hits it: the corner
-/// normals blended with the hit's barycentric weights,
-/// n = normalise((1 − α − β)·n_a + α·n_b + β·n_c) (Phong's normal
-/// interpolation), turned to the side of the geometric normal `geometric`,
-/// since shading decides front and back by that one. Falls back to the
-/// geometric normal if the blend vanishes.
-pub fn smooth_normal(vertices: [Vec3; 3], normals: [Vec3; 3], ray: &Ray, geometric: Vec3) -> Vec3 {
-    let Some((_, alpha, beta)) =
-        intersect_triangle(vertices, ray, f32::NEG_INFINITY, f32::INFINITY)
-    else {
-        return geometric;
-    };
+/// The barycentric coordinates (α, β) of the point where the ray meets the
+/// plane of the triangle (b − a, c − a), as the watertight test computes
+/// them; (0, 0) if the ray runs in the triangle's plane.
+pub fn barycentrics(vertices: [Vec3; 3], ray: &Ray) -> (f32, f32) {
+    intersect_triangle(vertices, ray, f32::NEG_INFINITY, f32::INFINITY)
+        .map_or((0.0, 0.0), |(_, alpha, beta)| (alpha, beta))
+}
+
+/// The point of the triangle with barycentric coordinates (α, β):
+/// (1 − α − β)·a + α·b + β·c.
+///
+/// Why not r0 + t·rd? That point carries the rounding error of t, which
+/// grows with the distance travelled, in every direction, off the plane too.
+/// A weighted mean of the corners is off the triangle's plane by at most a
+/// few units in the last place of the corners' coordinates, however thin the
+/// triangle (pbrt computes its hit points the same way), and chapter 4
+/// relies on that bound.
+pub fn triangle_point([a, b, c]: [Vec3; 3], (alpha, beta): (f32, f32)) -> Vec3 {
+    (1.0 - alpha - beta) * a + alpha * b + beta * c
+}
+
+/// The shading normal of a smooth triangle at barycentric coordinates
+/// (α, β): the corner normals blended with the same weights,
+/// (1 − α − β)·n_a + α·n_b + β·n_c, made unit length, and turned to the side
+/// of the geometric normal so that front and back stay where the flat
+/// triangle has them.
+pub fn smooth_normal(normals: [Vec3; 3], (alpha, beta): (f32, f32), geometric: Vec3) -> Vec3 {
     let [na, nb, nc] = normals;
     let blend = (1.0 - alpha - beta) * na + alpha * nb + beta * nc;
     let n = blend.normalize_or(geometric);
