@@ -51,33 +51,35 @@ pub fn intersect(shape: &Shape, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32
 
 /// The hit record of `ray` meeting `shape` at distance t.
 pub fn hit_at(shape: &Shape, ray: &Ray, t: f32, object: usize) -> Hit {
-    // Each point is put back onto its surface, which bounds its error by a
-    // few units in the last place (f32::EPSILON relative) of the largest
-    // coordinate involved: the point's, and for a triangle its corners'.
-    let (point, normal, error) = match *shape {
+    // Each point lies on its surface up to rounding (projected onto a sphere
+    // or plane; a triangle's is the barycentric mean of its corners), which
+    // bounds its error by a few units in the last place (f32::EPSILON
+    // relative) of the largest coordinate involved: the point's, and for a
+    // triangle its corners'.
+    let (point, normal, shading_normal, error) = match *shape {
         Shape::Sphere { center, radius } => {
             let point = sphere_point(center, radius, ray, t);
+            let normal = (point - center) / radius;
             let error = 4.0 * f32::EPSILON * (largest(point) + radius);
-            (point, (point - center) / radius, error)
+            (point, normal, normal, error)
         }
         Shape::Plane { normal, offset } => {
             let point = plane_point(normal, offset, ray, t);
-            (point, normal, 8.0 * f32::EPSILON * largest(point))
+            (point, normal, normal, 8.0 * f32::EPSILON * largest(point))
         }
         Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             let normal = triangle_normal(vertices);
-            let point = triangle_point(vertices, barycentrics(vertices, ray));
+            let weights = barycentrics(vertices, ray);
+            let point = triangle_point(vertices, weights);
+            let shading_normal = match *shape {
+                Shape::SmoothTriangle { normals, .. } => smooth_normal(normals, weights, normal),
+                _ => normal,
+            };
             let scale = vertices
                 .iter()
                 .fold(largest(point), |m, &v| m.max(largest(v)));
-            (point, normal, 8.0 * f32::EPSILON * scale)
+            (point, normal, shading_normal, 8.0 * f32::EPSILON * scale)
         }
-    };
-    let shading_normal = match *shape {
-        Shape::SmoothTriangle { vertices, normals } => {
-            smooth_normal(normals, barycentrics(vertices, ray), normal)
-        }
-        _ => normal,
     };
     Hit {
         t,
