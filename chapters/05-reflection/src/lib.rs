@@ -110,32 +110,26 @@ pub fn trace(
     };
     let surface = Surface::new(scene, hit, ray);
     let local = tracer.local(scene, world, &surface, stats);
-    // A matte, opaque surface spawns no secondary ray at all: don't ask.
-    let material = surface.material;
-    if material.reflectance == Color::ZERO && material.transparency == 0.0 {
-        return local;
+    let secondary = tracer.secondary_rays(&surface, ray);
+    if secondary == [None, None] {
+        return local; // a matte, opaque surface: its local light is all there is
     }
-    local + follow_secondary_rays(tracer, scene, world, &surface, ray, path, stats)
+    local + follow_secondary_rays(tracer, scene, world, secondary, path, stats)
 }
 
-/// The light that reaches `surface` along its secondary rays: for each one
+/// The light that reaches a surface along its secondary rays: for each one
 /// that may be traced, its weight times the colour seen along it, found by
 /// calling `trace` again (the recursion).
 fn follow_secondary_rays(
     tracer: &impl Whitted,
     scene: &Scene,
     world: &(impl World + ?Sized),
-    surface: &Surface,
-    incoming: &Ray,
+    secondary_rays: [Option<Secondary>; 2],
     path: Path,
     stats: &mut Stats,
 ) -> Color {
     let mut color = Color::ZERO;
-    for secondary in tracer
-        .secondary_rays(surface, incoming)
-        .into_iter()
-        .flatten()
-    {
+    for secondary in secondary_rays.into_iter().flatten() {
         let next = Path {
             depth: path.depth + 1,
             weight: path.weight * secondary.weight,
