@@ -275,11 +275,9 @@ fn scaling(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Result<(), Str
             builds.push(start.elapsed());
             summary = Some(bvh.summary());
             let start = Instant::now();
-            let tracer = ch08_bvh::Tracer {
-                termination: ch08_bvh::Termination::of(&scene),
-            };
+            let termination = ch08_bvh::Termination::of(&scene);
             let (_, stats) = with_threads(Some(threads), || {
-                ch08_bvh::render_whitted(&tracer, &scene, &bvh, || {})
+                ch08_bvh::render_complete(&scene, &bvh, termination, || {})
             })
             .map_err(|e| e.to_string())?;
             renders.push(start.elapsed());

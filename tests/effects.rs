@@ -182,3 +182,47 @@ fn an_earlier_chapter_names_the_chapter_that_would_simulate_the_rest() {
     );
     assert_eq!(plan.simulated, set(&[Effect::Lambert]));
 }
+
+/// Every scene file of the chapters, at 80×60.
+fn every_chapter_scene() -> Vec<(String, Scene)> {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/chapters");
+    let mut paths: Vec<_> = std::fs::read_dir(root)
+        .unwrap()
+        .flat_map(|chapter| std::fs::read_dir(chapter.unwrap().path().join("scenes")))
+        .flatten()
+        .map(|entry| entry.unwrap().path())
+        .filter(|path| path.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    paths.sort();
+    assert!(paths.len() >= 12, "found only {paths:?}");
+    let scene = |path: &std::path::PathBuf| Scene::load(path).unwrap().with_size(80, 60);
+    paths
+        .iter()
+        .map(|path| (path.display().to_string(), scene(path)))
+        .collect()
+}
+
+#[test]
+fn the_tracer_chosen_for_the_effects_gives_the_full_tracers_picture_and_counts() {
+    use raybook::tracer::{Termination, Tracer, render_complete, render_whitted};
+    let secondary = set(&[Effect::Reflection, Effect::Refraction]);
+    let mut direct = 0;
+    for (path, scene) in every_chapter_scene() {
+        // Each scene as it is, and cut down to what chapter 4 can show.
+        for scene in [scene.clone(), scene.without(secondary)] {
+            let termination = Termination::of(&scene);
+            let world = &scene.objects[..];
+            let chosen = render_complete(&scene, world, termination, || {});
+            let full = render_whitted(&Tracer { termination }, &scene, world, || {});
+            assert!(
+                chosen.0.pixels == full.0.pixels,
+                "{path}: the pictures differ"
+            );
+            assert_eq!(chosen.1, full.1, "{path}");
+            if scene.calls_for().and(secondary).is_empty() {
+                direct += 1;
+            }
+        }
+    }
+    assert!(direct >= 12, "the direct tracer was chosen {direct} times");
+}

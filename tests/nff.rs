@@ -5,7 +5,7 @@ use raybook::nff;
 use raybook::toolkit::scene::{Light, Shape};
 use raybook::toolkit::snapshot::workspace_root;
 use raybook::toolkit::{Color, Scene, SceneError, Vec3};
-use raybook::tracer::{Termination, Tracer, World, render_whitted};
+use raybook::tracer::{Termination, World, render_complete};
 
 /// A small scene using every entity raybook reads.
 const GOOD: &str = "# a comment
@@ -158,10 +158,7 @@ fn structural_mistakes_are_refused_too() {
 
 /// Renders with the complete tracer against `world`.
 fn render(scene: &Scene, world: &(impl World + ?Sized)) -> raybook::toolkit::Image {
-    let tracer = Tracer {
-        termination: Termination::of(scene),
-    };
-    render_whitted(&tracer, scene, world, || {}).0
+    render_complete(scene, world, Termination::of(scene), || {}).0
 }
 
 #[test]

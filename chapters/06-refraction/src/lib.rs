@@ -3,8 +3,8 @@
 mod snell;
 
 pub use ch05_reflection::{
-    Camera, Hit, Kind, Mirrors, Path, Ray, Secondary, Surface, Whitted, World, closest_hit,
-    mirror_ray, offset_origin, reflect, render, render_whitted, toolkit, trace,
+    Camera, Hit, Kind, Mirrors, Origin, Path, Ray, Secondary, Surface, Whitted, World, closest_hit,
+    lambert, mirror_ray, offset_origin, reflect, render, render_whitted, shade, toolkit, trace,
 };
 pub use snell::{refract, schlick};
 

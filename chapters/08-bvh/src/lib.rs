@@ -6,7 +6,8 @@ mod build;
 pub use aabb::{Aabb, bounds};
 pub use ch02_hits::{hit_at, intersect};
 pub use ch07_termination::{
-    Camera, Hit, Ray, Termination, Tracer, World, closest_hit, render, render_whitted, toolkit,
+    Camera, Hit, Ray, Termination, Tracer, World, closest_hit, render, render_complete,
+    render_whitted, toolkit,
 };
 
 use build::{Item, Node};
@@ -279,7 +280,7 @@ pub fn render_bvh(
     on_row: impl Fn() + Sync,
 ) -> (Image, Stats) {
     let bvh = Bvh::build(&scene.objects);
-    render_whitted(&Tracer { termination }, scene, &bvh, on_row)
+    render_complete(scene, &bvh, termination, on_row)
 }
 
 /// This chapter, for the command line.

@@ -6,7 +6,7 @@ use ch08_bvh::toolkit::cli::with_threads;
 use ch08_bvh::toolkit::scene::{Object, Shape};
 use ch08_bvh::toolkit::snapshot::{assert_image, workspace_root};
 use ch08_bvh::toolkit::{Image, Scene, Stats, Vec3};
-use ch08_bvh::{Bvh, CHAPTER, Ray, Termination, Tracer, World, render_bvh, render_whitted};
+use ch08_bvh::{Bvh, CHAPTER, Ray, Termination, World, render_bvh, render_complete};
 use proptest::prelude::*;
 
 /// Every chapter's scene files, the first chapter first.
@@ -30,10 +30,7 @@ fn chapter_scenes() -> Vec<PathBuf> {
 
 /// The complete tracer against `world`.
 fn render_against(scene: &Scene, world: &(impl World + ?Sized)) -> (Image, Stats) {
-    let tracer = Tracer {
-        termination: Termination::of(scene),
-    };
-    render_whitted(&tracer, scene, world, || {})
+    render_complete(scene, world, Termination::of(scene), || {})
 }
 
 #[test]
