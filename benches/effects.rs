@@ -1,50 +1,126 @@
 //! Unused effects cost nothing: the complete tracer (chapter 7) against
 //! chapter 3's own tracer, on chapter 3's default scene.
 //!
-//! Run with `cargo bench --bench effects`. Three measurements:
+//! Run with `cargo bench --bench effects`. Four renders are measured:
 //! * `chapter 3`: chapter 3's tracer (Lambert, ambient, point and spot lights);
 //! * `complete, chapter 3's effects`: the complete tracer on the scene with
 //!   the effects chapter 3 cannot simulate switched off (here: shadows): the
-//!   same picture, so any difference is the price of unused machinery;
+//!   same picture, so any difference is the price of unused machinery. The
+//!   scene calls for no secondary ray, so the complete tracer renders it
+//!   with `Direct`;
+//! * `Whitted tracer forced, chapter 3's effects`: the same, but with the
+//!   full `Tracer` whatever the scene calls for: what that choice saves;
 //! * `complete, all effects`: the complete tracer on the whole scene, which
 //!   also traces shadow rays.
 //!
 //! Both tracers test every object in turn (no BVH), so that only the
 //! effects differ.
+//!
+//! Criterion measures each render in turn. On a shared machine the speed
+//! drifts over the minutes that takes, so the first three are then timed
+//! again in alternation, round after round, and the median of the
+//! per-round ratios is printed: drift affects both sides of a ratio alike.
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 use ch03_lambert::render_lambert;
-use criterion::{Criterion, criterion_group, criterion_main};
-use raybook::toolkit::Scene;
+use criterion::Criterion;
 use raybook::toolkit::cli::EffectPlan;
-use raybook::tracer::{Termination, render_terminated};
+use raybook::toolkit::{Image, Scene};
+use raybook::tracer::{Termination, Tracer, render_terminated, render_whitted};
 
-fn scene() -> Scene {
-    ch03_lambert::CHAPTER.default_scene().unwrap()
+/// Chapter 3's default scene, whole and with the effects chapter 3 cannot
+/// simulate switched off.
+fn scenes() -> (Scene, Scene) {
+    let full = ch03_lambert::CHAPTER.default_scene().unwrap();
+    let plan = EffectPlan::new(&raybook::CHAPTER, &full, &[]);
+    let switched_off = plan.simulated.minus(ch03_lambert::CHAPTER.effects);
+    let reduced = full.clone().without(switched_off);
+    (full, reduced)
 }
 
-fn effects(c: &mut Criterion) {
-    let full = scene();
-    let chapter3 = ch03_lambert::CHAPTER;
-    let plan = EffectPlan::new(&raybook::CHAPTER, &full, &[]);
-    let switched_off = plan.simulated.minus(chapter3.effects);
-    let reduced = full.clone().without(switched_off);
+/// A render to time, and its name.
+type Render<'a> = (&'static str, Box<dyn Fn() -> Image + 'a>);
+
+/// The renders compared.
+fn renders<'a>(full: &'a Scene, reduced: &'a Scene) -> Vec<Render<'a>> {
+    let forced = Tracer {
+        termination: Termination::of(reduced),
+    };
+    vec![
+        ("chapter 3", Box::new(|| render_lambert(full, || {}).0)),
+        (
+            "complete, chapter 3's effects",
+            Box::new(|| render_terminated(reduced, Termination::of(reduced), || {}).0),
+        ),
+        (
+            "Whitted tracer forced, chapter 3's effects",
+            Box::new(move || render_whitted(&forced, reduced, &reduced.objects[..], || {}).0),
+        ),
+        (
+            "complete, all effects",
+            Box::new(|| render_terminated(full, Termination::of(full), || {}).0),
+        ),
+    ]
+}
+
+fn with_criterion(renders: &[Render]) {
+    let mut criterion = Criterion::default().configure_from_args();
+    let mut group = criterion.benchmark_group("chapter 3's default scene, 320x240");
+    group.sample_size(30);
+    for (name, render) in renders {
+        group.bench_function(*name, |b| b.iter(render));
+    }
+    group.finish();
+    criterion.final_summary();
+}
+
+/// The median of some numbers.
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
+
+/// Times the first three renders in alternation and prints, for each, the
+/// median time and the median ratio to chapter 3 within a round.
+fn interleaved(renders: &[Render]) {
+    const ROUNDS: usize = 21;
+    const RENDERS_PER_ROUND: u32 = 10;
+    let compared = &renders[..3];
+    let mut times = vec![Vec::new(); compared.len()];
+    for _ in 0..ROUNDS {
+        for (i, (_, render)) in compared.iter().enumerate() {
+            let start = Instant::now();
+            for _ in 0..RENDERS_PER_ROUND {
+                black_box(render());
+            }
+            times[i].push(start.elapsed() / RENDERS_PER_ROUND);
+        }
+    }
+    let ms = |d: &Duration| d.as_secs_f64() * 1e3;
+    println!("\nin alternation, {ROUNDS} rounds of {RENDERS_PER_ROUND} renders each:");
+    println!("| render | median time | median ratio to chapter 3 |");
+    println!("| --- | ---: | ---: |");
+    for (i, (name, _)) in compared.iter().enumerate() {
+        let ratios = (times[i].iter().zip(&times[0])).map(|(t, base)| ms(t) / ms(base));
+        let time = median(times[i].iter().map(ms).collect());
+        println!(
+            "| {name} | {time:.3} ms | {:.3} |",
+            median(ratios.collect())
+        );
+    }
+}
+
+fn main() {
+    let (full, reduced) = scenes();
+    let renders = renders(&full, &reduced);
     assert_eq!(
-        render_lambert(&full, || {}).0,
-        render_terminated(&reduced, Termination::of(&reduced), || {}).0,
+        renders[0].1(),
+        renders[1].1(),
         "the two tracers must make the same picture"
     );
-
-    let mut group = c.benchmark_group("chapter 3's default scene, 320x240");
-    group.sample_size(30);
-    group.bench_function("chapter 3", |b| b.iter(|| render_lambert(&full, || {})));
-    group.bench_function("complete, chapter 3's effects", |b| {
-        b.iter(|| render_terminated(&reduced, Termination::of(&reduced), || {}))
-    });
-    group.bench_function("complete, all effects", |b| {
-        b.iter(|| render_terminated(&full, Termination::of(&full), || {}))
-    });
-    group.finish();
+    assert_eq!(renders[1].1(), renders[2].1(), "the choice changes nothing");
+    with_criterion(&renders);
+    interleaved(&renders);
 }
-
-criterion_group!(benches, effects);
-criterion_main!(benches);
