@@ -1,6 +1,8 @@
 //! Simulate only the effects a scene calls for: the sets are right, and the
 //! ray counts show that nothing else is computed.
 
+mod common;
+
 use raybook::render;
 use raybook::toolkit::cli::{Chapter, EffectPlan};
 use raybook::toolkit::scene::{Effect, Effects, Light};
@@ -183,31 +185,16 @@ fn an_earlier_chapter_names_the_chapter_that_would_simulate_the_rest() {
     assert_eq!(plan.simulated, set(&[Effect::Lambert]));
 }
 
-/// Every scene file of the chapters, at 80×60.
-fn every_chapter_scene() -> Vec<(String, Scene)> {
-    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/chapters");
-    let mut paths: Vec<_> = std::fs::read_dir(root)
-        .unwrap()
-        .flat_map(|chapter| std::fs::read_dir(chapter.unwrap().path().join("scenes")))
-        .flatten()
-        .map(|entry| entry.unwrap().path())
-        .filter(|path| path.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    paths.sort();
-    assert!(paths.len() >= 12, "found only {paths:?}");
-    let scene = |path: &std::path::PathBuf| Scene::load(path).unwrap().with_size(80, 60);
-    paths
-        .iter()
-        .map(|path| (path.display().to_string(), scene(path)))
-        .collect()
-}
-
 #[test]
 fn the_tracer_chosen_for_the_effects_gives_the_full_tracers_picture_and_counts() {
     use raybook::tracer::{Termination, Tracer, render_complete, render_whitted};
     let secondary = set(&[Effect::Reflection, Effect::Refraction]);
     let mut direct = 0;
-    for (path, scene) in every_chapter_scene() {
+    for file in common::chapter_scene_files() {
+        let (path, scene) = (
+            file.display(),
+            Scene::load(&file).unwrap().with_size(80, 60),
+        );
         // Each scene as it is, and cut down to what chapter 4 can show.
         for scene in [scene.clone(), scene.without(secondary)] {
             let termination = Termination::of(&scene);

@@ -1,22 +1,17 @@
 //! Nothing panics on any input: mutated scene files are either refused with
 //! an error or rendered.
 
+mod common;
+
 use proptest::prelude::*;
 use raybook::render;
 use raybook::toolkit::Scene;
 
 /// Every scene file of the repository, as mutation seeds.
 fn seeds() -> Vec<String> {
-    let root = env!("CARGO_MANIFEST_DIR");
-    let mut texts = Vec::new();
-    for chapter in std::fs::read_dir(format!("{root}/chapters")).unwrap() {
-        let dir = chapter.unwrap().path().join("scenes");
-        for file in std::fs::read_dir(dir).into_iter().flatten() {
-            texts.push(std::fs::read_to_string(file.unwrap().path()).unwrap());
-        }
-    }
-    assert!(texts.len() >= 2, "the chapters' scenes are the seeds");
-    texts
+    (common::chapter_scene_files().iter())
+        .map(|path| std::fs::read_to_string(path).unwrap())
+        .collect()
 }
 
 /// Tokens that are likely to break something when dropped into a scene.
