@@ -21,7 +21,7 @@ use crate::toolkit::{Scene, Vec3};
 #[derive(clap::Args, Debug, Clone)]
 pub struct BenchArgs {
     /// Folder of SPD scenes: NAME.nff, and NAME.pov for POV-Ray.
-    #[arg(long, default_value = "../shared/scenes/spd")]
+    #[arg(long, default_value = "scenes/spd")]
     pub scenes: PathBuf,
 
     /// Only the scenes whose names contain one of these (default: all).

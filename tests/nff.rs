@@ -33,7 +33,7 @@ pp 3
 ";
 
 fn spd(name: &str) -> std::path::PathBuf {
-    workspace_root().join("../shared/scenes/spd").join(name)
+    workspace_root().join("scenes/spd").join(name)
 }
 
 #[test]
@@ -163,7 +163,7 @@ fn render(scene: &Scene, world: &(impl World + ?Sized)) -> raybook::toolkit::Ima
 
 #[test]
 fn bvh_and_brute_force_give_the_same_picture_on_the_spd_scenes() {
-    let dir = workspace_root().join("../shared/scenes/spd");
+    let dir = workspace_root().join("scenes/spd");
     let mut names: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().path())
