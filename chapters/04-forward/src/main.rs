@@ -5,17 +5,17 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use ch04_shadows::forward::{
-    Forward, Settings, backward_image, check_scene, expected_image, rays_needed, trace_forward,
+use ch04_forward::{
+    Run, Settings, backward_image, check_scene, expected_image, measure, rays_needed, strip,
 };
 use ch04_shadows::toolkit::cli::progress_bar;
-use ch04_shadows::toolkit::compare::{psnr, rmse, rmse_clamped};
-use ch04_shadows::toolkit::{Color, Image, Scene};
+use ch04_shadows::toolkit::compare::{psnr, rmse_clamped};
+use ch04_shadows::toolkit::{Image, Scene};
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 
-const DEFAULT_SCENE_PATH: &str = "chapters/04-shadows/scenes/forward.toml";
-const DEFAULT_SCENE: &str = include_str!("../../scenes/forward.toml");
+const DEFAULT_SCENE_PATH: &str = "chapters/04-forward/scenes/forward.toml";
+const DEFAULT_SCENE: &str = include_str!("../scenes/forward.toml");
 
 /// The quality to reach: a noise of one step of the 8-bit picture.
 const TARGET: f64 = 1.0 / 255.0;
@@ -31,7 +31,7 @@ const TARGET: f64 = 1.0 / 255.0;
 #[command(version)]
 struct Args {
     /// Scene file (TOML): diffuse materials, point lights, black background.
-    /// Without it, chapters/04-shadows/scenes/forward.toml.
+    /// Without it, chapters/04-forward/scenes/forward.toml.
     scene: Option<PathBuf>,
 
     /// Photons to emit, over all lights (1e6 and 1000000 both work). This
@@ -101,29 +101,35 @@ fn parse_aperture(text: &str) -> Result<f32, String> {
     }
 }
 
-/// One forward picture and how it measures up.
-struct Run {
-    rays: u64,
-    forward: Forward,
-    seconds: f64,
-    /// RMSE against the backward picture, as the PNGs show them.
-    error: f64,
-    /// RMSE against the expected picture, unclamped: the noise alone.
-    noise: f64,
-}
-
-fn photon_bar(rays: u64, quiet: bool) -> ProgressBar {
-    if quiet {
-        return ProgressBar::hidden();
+fn main() -> ExitCode {
+    match run(&Args::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
     }
-    let style = ProgressStyle::with_template(
-        "{spinner} tracing forward [{bar:40}] {human_pos}/{human_len} photons, {eta} left",
-    )
-    .expect("a valid template")
-    .progress_chars("=> ");
-    ProgressBar::new(rays).with_style(style)
 }
 
+/// The whole program, step by step.
+fn run(args: &Args) -> Result<(), String> {
+    let (scene, name) = load(args)?;
+    let (w, h) = (scene.image.width, scene.image.height);
+    println!(
+        "scene {name}, {w}×{h} pixels, aperture radius a = {}",
+        args.aperture
+    );
+    let backward = trace_backward(&scene);
+    let expected = trace_expected(&scene, args, &backward);
+    let strip_rays = strip_counts(args.strip_up_to);
+    let runs = measure_all(&scene, args, &backward, &expected, &strip_rays);
+    let largest = runs.last().expect("at least one run");
+    conclude(args, largest, w * h);
+    write_strip(args, &runs, &strip_rays, &backward)
+}
+
+/// The scene named on the command line (or the default), at the size asked
+/// for, if the forward tracer can render it; and its name.
 fn load(args: &Args) -> Result<(Scene, String), String> {
     let (scene, name) = match &args.scene {
         Some(path) => (
@@ -141,54 +147,25 @@ fn load(args: &Args) -> Result<(Scene, String), String> {
     Ok((scene, name))
 }
 
-/// The pictures side by side, left to right, with a grey line between.
-fn strip(images: &[&Image]) -> Image {
-    const GAP: u32 = 2;
-    let (w, h) = (images[0].width, images[0].height);
-    let width = images.len() as u32 * (w + GAP) - GAP;
-    let mut pixels = vec![Color::splat(0.5); (width * h) as usize];
-    for (i, image) in images.iter().enumerate() {
-        let left = i as u32 * (w + GAP);
-        for y in 0..h {
-            for x in 0..w {
-                pixels[(y * width + left + x) as usize] = image.get(x, y);
-            }
-        }
-    }
-    Image {
-        width,
-        height: h,
-        pixels,
-    }
-}
-
-fn main() -> ExitCode {
-    let args = Args::parse();
-    let (scene, name) = match load(&args) {
-        Ok(loaded) => loaded,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::FAILURE;
-        }
-    };
-    let (w, h) = (scene.image.width, scene.image.height);
-    println!(
-        "scene {name}, {w}×{h} pixels, aperture radius a = {}",
-        args.aperture
-    );
-
+/// Idea 2: chapter 4's picture, timed.
+fn trace_backward(scene: &Scene) -> Image {
     let start = Instant::now();
-    let backward = backward_image(&scene, || {});
+    let backward = backward_image(scene, || {});
     println!(
         "backward (Idea 2, chapter 4): one ray per pixel, {} s",
         fmt_seconds(start.elapsed().as_secs_f64())
     );
+    backward
+}
 
-    let bar = progress_bar(h, args.quiet);
+/// What the forward picture converges to, and how far that is from the
+/// backward picture: the floor of the forward picture's error.
+fn trace_expected(scene: &Scene, args: &Args, backward: &Image) -> Image {
+    let bar = progress_bar(scene.image.height, args.quiet);
     let start = Instant::now();
-    let expected = expected_image(&scene, args.aperture, args.samples, || bar.inc(1));
+    let expected = expected_image(scene, args.aperture, args.samples, || bar.inc(1));
     bar.finish_and_clear();
-    let floor = rmse_clamped(&backward, &expected);
+    let floor = rmse_clamped(backward, &expected);
     println!(
         "expected forward picture: {} backward rays per pixel over the pixel and the aperture, {} s;\n  \
          its RMSE against the backward picture is {floor:.5} ({:.1} dB): the error no number of photons removes",
@@ -196,58 +173,85 @@ fn main() -> ExitCode {
         fmt_seconds(start.elapsed().as_secs_f64()),
         psnr(floor)
     );
+    expected
+}
 
-    let strip_rays: Vec<u64> = std::iter::successors(Some(100_000u64), |n| n.checked_mul(10))
-        .take_while(|&n| n <= args.strip_up_to)
-        .collect();
-    let mut all_rays = strip_rays.clone();
+/// The photons of the strip's forward pictures: 1e5, 1e6, … up to `up_to`.
+fn strip_counts(up_to: u64) -> Vec<u64> {
+    std::iter::successors(Some(100_000u64), |n| n.checked_mul(10))
+        .take_while(|&n| n <= up_to)
+        .collect()
+}
+
+/// Traces forward with the strip's numbers of photons and `--rays`, fewest
+/// first, and prints a table row for each.
+fn measure_all(
+    scene: &Scene,
+    args: &Args,
+    backward: &Image,
+    expected: &Image,
+    strip_rays: &[u64],
+) -> Vec<Run> {
+    let mut all_rays = strip_rays.to_vec();
     all_rays.push(args.rays);
     all_rays.sort_unstable();
     all_rays.dedup();
-
     println!(
         "\n{:>9} {:>11} {:>10} {:>9} {:>10} {:>8} {:>10}",
         "photons", "reach image", "share", "time s", "RMSE", "PSNR dB", "noise RMSE"
     );
     let mut runs = Vec::new();
-    for &rays in &all_rays {
+    for rays in all_rays {
         let settings = Settings {
             rays,
             aperture: args.aperture,
             seed: args.seed,
         };
         let bar = photon_bar(rays, args.quiet);
-        let start = Instant::now();
-        let traced = trace_forward(&scene, &settings, |n| bar.inc(n));
-        let seconds = start.elapsed().as_secs_f64();
+        let run = measure(scene, &settings, backward, expected, |n| bar.inc(n));
         bar.finish_and_clear();
-        let run = Run {
-            rays,
-            error: rmse_clamped(&backward, &traced.image),
-            noise: rmse(&expected, &traced.image),
-            forward: traced,
-            seconds,
-        };
-        println!(
-            "{:>9} {:>11} {:>10.3e} {:>9} {:>10.5} {:>8.2} {:>10.4}{}",
-            format!("{:e}", rays as f64),
-            run.forward.counts.on_image,
-            run.forward.share(),
-            fmt_seconds(run.seconds),
-            run.error,
-            psnr(run.error),
-            run.noise,
-            if rays == args.rays { "  (--rays)" } else { "" }
-        );
+        print_row(&run, rays == args.rays);
         runs.push(run);
     }
     println!(
         "RMSE and PSNR: against the backward picture, each channel clamped to [0, 1] as the PNG shows it;"
     );
     println!("noise RMSE: against the expected picture, unclamped.");
+    runs
+}
 
-    let largest = runs.last().expect("at least one run");
-    if largest.forward.counts.on_image == 0 {
+fn photon_bar(rays: u64, quiet: bool) -> ProgressBar {
+    if quiet {
+        return ProgressBar::hidden();
+    }
+    let style = ProgressStyle::with_template(
+        "{spinner} tracing forward [{bar:40}] {human_pos}/{human_len} photons, {eta} left",
+    )
+    .expect("a valid template")
+    .progress_chars("=> ");
+    ProgressBar::new(rays).with_style(style)
+}
+
+/// One row of the table; `asked` marks the run of `--rays`.
+fn print_row(run: &Run, asked: bool) {
+    println!(
+        "{:>9} {:>11} {:>10.3e} {:>9} {:>10.5} {:>8.2} {:>10.4}{}",
+        format!("{:e}", run.rays as f64),
+        run.forward.counts.on_image,
+        run.forward.share(),
+        fmt_seconds(run.seconds),
+        run.error,
+        psnr(run.error),
+        run.noise,
+        if asked { "  (--rays)" } else { "" }
+    );
+}
+
+/// The conclusion, from the largest run: how many photons a good picture of
+/// `pixels` pixels takes, or why no number of them makes one.
+fn conclude(args: &Args, largest: &Run, pixels: u32) {
+    let on_image = largest.forward.counts.on_image;
+    if on_image == 0 {
         if args.aperture == 0.0 {
             println!(
                 "\nno photon passes a true pinhole (a = 0): the share is exactly zero, \
@@ -260,44 +264,51 @@ fn main() -> ExitCode {
                 args.aperture, largest.rays as f64
             );
         }
-    } else {
-        let needed = rays_needed(largest.rays, largest.noise, TARGET);
-        let rate = largest.rays as f64 / largest.seconds;
-        println!(
-            "\nnoise RMSE ≤ 1/255 (one 8-bit step) takes about {needed:.1e} photons \
-             (N·noise² stays constant; from the run of {:e},\n  \
-             whose {} photons on the image make this good to roughly ±{:.0}%),\n  \
-             {:.0} photons reaching each pixel, about {} at this machine's {rate:.2e} photons/s;\n  \
-             the backward picture needs one ray per pixel",
-            largest.rays as f64,
-            largest.forward.counts.on_image,
-            100.0 / (largest.forward.counts.on_image as f64).sqrt(),
-            needed * largest.forward.share() / f64::from(w * h),
-            fmt_duration(needed / rate),
-        );
+        return;
     }
+    let needed = rays_needed(largest.rays, largest.noise, TARGET);
+    let rate = largest.rays as f64 / largest.seconds;
+    println!(
+        "\nnoise RMSE ≤ 1/255 (one 8-bit step) takes about {needed:.1e} photons \
+         (N·noise² stays constant; from the run of {:e},\n  \
+         whose {on_image} photons on the image make this good to roughly ±{:.0}%),\n  \
+         {:.0} photons reaching each pixel, about {} at this machine's {rate:.2e} photons/s;\n  \
+         the backward picture needs one ray per pixel",
+        largest.rays as f64,
+        100.0 / (on_image as f64).sqrt(),
+        needed * largest.forward.share() / f64::from(pixels),
+        fmt_duration(needed / rate),
+    );
+}
 
+/// Writes the strip: the forward pictures of `strip_rays` photons, then the
+/// backward one.
+fn write_strip(
+    args: &Args,
+    runs: &[Run],
+    strip_rays: &[u64],
+    backward: &Image,
+) -> Result<(), String> {
     let mut panels: Vec<&Image> = runs
         .iter()
         .filter(|run| strip_rays.contains(&run.rays))
         .map(|run| &run.forward.image)
         .collect();
-    panels.push(&backward);
+    panels.push(backward);
     let labels: Vec<String> = strip_rays
         .iter()
         .map(|&n| format!("forward {:e}", n as f64))
         .chain(["backward".to_owned()])
         .collect();
-    if let Err(e) = strip(&panels).save_png(&args.output) {
-        eprintln!("error: cannot write {}: {e}", args.output.display());
-        return ExitCode::FAILURE;
-    }
+    strip(&panels)
+        .save_png(&args.output)
+        .map_err(|e| format!("cannot write {}: {e}", args.output.display()))?;
     println!(
         "wrote {} (left to right: {})",
         args.output.display(),
         labels.join(" | ")
     );
-    ExitCode::SUCCESS
+    Ok(())
 }
 
 fn fmt_seconds(seconds: f64) -> String {

@@ -2,8 +2,8 @@
 //! 4's backward one, and the share of photons that make it falls with the
 //! aperture.
 
-use ch04_shadows::forward::{
-    Sensor, Settings, backward_image, check_scene, cosine_hemisphere, expected_image,
+use ch04_forward::{
+    Forward, Sensor, Settings, backward_image, check_scene, cosine_hemisphere, expected_image,
     trace_forward, uniform_sphere,
 };
 use ch04_shadows::toolkit::compare::{psnr, rmse, rmse_clamped};
@@ -46,7 +46,7 @@ fn close_up() -> Scene {
     Scene::parse(text, "close-up.toml").unwrap()
 }
 
-fn forward(scene: &Scene, rays: u64, aperture: f32) -> ch04_shadows::forward::Forward {
+fn forward(scene: &Scene, rays: u64, aperture: f32) -> Forward {
     let settings = Settings {
         rays,
         aperture,
