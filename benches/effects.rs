@@ -26,16 +26,17 @@ use std::time::{Duration, Instant};
 
 use ch03_lambert::render_lambert;
 use criterion::Criterion;
+use raybook::bench::median;
 use raybook::toolkit::cli::EffectPlan;
 use raybook::toolkit::{Image, Scene};
-use raybook::tracer::{Termination, Tracer, render_terminated, render_whitted};
+use raybook::tracer::{Termination, Tracer, render_complete, render_whitted};
 
 /// Chapter 3's default scene, whole and with the effects chapter 3 cannot
 /// simulate switched off.
 fn scenes() -> (Scene, Scene) {
     let full = ch03_lambert::CHAPTER.default_scene().unwrap();
     let plan = EffectPlan::new(&raybook::CHAPTER, &full, &[]);
-    let switched_off = plan.simulated.minus(ch03_lambert::CHAPTER.effects);
+    let switched_off = plan.simulated.minus(ch03_lambert::CHAPTER.effects());
     let reduced = full.clone().without(switched_off);
     (full, reduced)
 }
@@ -52,7 +53,15 @@ fn renders<'a>(full: &'a Scene, reduced: &'a Scene) -> Vec<Render<'a>> {
         ("chapter 3", Box::new(|| render_lambert(full, || {}).0)),
         (
             "complete, chapter 3's effects",
-            Box::new(|| render_terminated(reduced, Termination::of(reduced), || {}).0),
+            Box::new(|| {
+                render_complete(
+                    reduced,
+                    &reduced.objects[..],
+                    Termination::of(reduced),
+                    || {},
+                )
+                .0
+            }),
         ),
         (
             "Whitted tracer forced, chapter 3's effects",
@@ -60,7 +69,7 @@ fn renders<'a>(full: &'a Scene, reduced: &'a Scene) -> Vec<Render<'a>> {
         ),
         (
             "complete, all effects",
-            Box::new(|| render_terminated(full, Termination::of(full), || {}).0),
+            Box::new(|| render_complete(full, &full.objects[..], Termination::of(full), || {}).0),
         ),
     ]
 }
@@ -74,12 +83,6 @@ fn with_criterion(renders: &[Render]) {
     }
     group.finish();
     criterion.final_summary();
-}
-
-/// The median of some numbers.
-fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values[values.len() / 2]
 }
 
 /// Times the first three renders in alternation and prints, for each, the
@@ -104,11 +107,8 @@ fn interleaved(renders: &[Render]) {
     println!("| --- | ---: | ---: |");
     for (i, (name, _)) in compared.iter().enumerate() {
         let ratios = (times[i].iter().zip(&times[0])).map(|(t, base)| ms(t) / ms(base));
-        let time = median(times[i].iter().map(ms).collect());
-        println!(
-            "| {name} | {time:.3} ms | {:.3} |",
-            median(ratios.collect())
-        );
+        let time = median(times[i].iter().map(ms));
+        println!("| {name} | {time:.3} ms | {:.3} |", median(ratios));
     }
 }
 

@@ -1,7 +1,7 @@
-//! `raybook accuracy`: the errors behave, the CSV is complete. Times are
-//! measured and reported, never asserted.
+//! `raybook accuracy`: the errors behave, the table and the CSV are
+//! complete. Times are measured and reported, never asserted.
 
-use raybook::accuracy::{Knob, all_settings, csv, settings, sweep};
+use raybook::accuracy::{Knob, Measurement, all_settings, csv, pareto, settings, sweep, table};
 use raybook::toolkit::Scene;
 
 fn scene(path: &str) -> Scene {
@@ -11,12 +11,21 @@ fn scene(path: &str) -> Scene {
         .with_size(48, 36)
 }
 
+/// Every setting of the quick sweeps, measured once on a small showcase.
+fn quick_showcase(width: u32, height: u32) -> Vec<Measurement> {
+    let showcase = raybook::CHAPTER
+        .default_scene()
+        .unwrap()
+        .with_size(width, height);
+    sweep(&showcase, &all_settings(true), 1, || {})
+}
+
 #[test]
 fn error_falls_with_depth_in_the_mirror_corridor() {
     let corridor = scene("05-reflection/scenes/corridor.toml");
-    let rows = sweep(&corridor, &settings(Knob::Depth, false), 1, || {});
-    assert_eq!(rows.len(), 13, "depths 0 to 12");
-    for pair in rows.windows(2) {
+    let measured = sweep(&corridor, &settings(Knob::Depth, false), 1, || {});
+    assert_eq!(measured.len(), 13, "depths 0 to 12");
+    for pair in measured.windows(2) {
         assert!(
             pair[1].rmse <= pair[0].rmse,
             "depth {} has RMSE {} but depth {} has {}",
@@ -27,49 +36,92 @@ fn error_falls_with_depth_in_the_mirror_corridor() {
         );
     }
     assert!(
-        rows[0].rmse > 10.0 * rows[6].rmse,
+        measured[0].rmse > 10.0 * measured[6].rmse,
         "the corridor needs its bounces"
     );
 }
 
 #[test]
 fn the_reference_setting_has_zero_error() {
-    let showcase = raybook::CHAPTER.default_scene().unwrap().with_size(48, 36);
-    let rows = sweep(&showcase, &all_settings(true), 1, || {});
-    for knob in [Knob::Depth, Knob::Threshold, Knob::Samples, Knob::Effects] {
-        let last = rows.iter().rfind(|r| r.setting.knob == knob).unwrap();
+    let measured = quick_showcase(48, 36);
+    for knob in Knob::ALL {
+        let last = measured.iter().rfind(|m| m.setting.knob == knob).unwrap();
         assert_eq!(last.rmse, 0.0, "{knob:?}");
         assert_eq!(last.max_error, 0.0);
         assert!(last.psnr.is_infinite());
     }
     // And the least accurate setting of each knob is not exact.
-    for knob in [Knob::Depth, Knob::Threshold, Knob::Samples, Knob::Effects] {
-        let first = rows.iter().find(|r| r.setting.knob == knob).unwrap();
+    for knob in Knob::ALL {
+        let first = measured.iter().find(|m| m.setting.knob == knob).unwrap();
         assert!(first.rmse > 0.0, "{knob:?}");
     }
 }
 
 #[test]
-fn the_csv_has_one_row_per_setting_and_no_nan() {
-    let showcase = raybook::CHAPTER.default_scene().unwrap().with_size(32, 24);
-    let all = all_settings(true);
-    let rows = sweep(&showcase, &all, 1, || {});
-    let text = csv(&rows);
-    let lines: Vec<&str> = text.lines().collect();
+fn the_csv_has_one_record_per_setting_and_no_nan() {
+    let measured = quick_showcase(32, 24);
+    let text = csv(&measured);
+    let mut reader = csv::Reader::from_reader(text.as_bytes());
+    let header = reader.headers().unwrap().clone();
     assert_eq!(
-        lines.len(),
-        1 + all.len(),
-        "a header and one line per setting"
+        header.iter().collect::<Vec<_>>(),
+        [
+            "knob",
+            "value",
+            "seconds",
+            "rays",
+            "rmse",
+            "psnr_db",
+            "max_error",
+            "share_off_1_255"
+        ]
     );
-    let columns = lines[0].split(',').count();
-    for line in &lines[1..] {
-        let fields: Vec<&str> = line.split(',').collect();
-        assert_eq!(fields.len(), columns, "{line}");
-        for number in &fields[2..] {
+    let records: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(records.len(), all_settings(true).len(), "one per setting");
+    for (record, m) in records.iter().zip(&measured) {
+        assert_eq!(record.len(), header.len(), "{record:?}");
+        assert_eq!(&record[0], m.setting.knob.name());
+        assert_eq!(&record[1], m.setting.value);
+        for number in record.iter().skip(2) {
             let value: f64 = number
                 .parse()
-                .unwrap_or_else(|_| panic!("{number} in {line}"));
-            assert!(!value.is_nan(), "{line}");
+                .unwrap_or_else(|_| panic!("{number} in {record:?}"));
+            assert!(!value.is_nan(), "{record:?}");
         }
+    }
+    // The references match exactly: an infinite PSNR, written so.
+    assert!(records.iter().any(|r| &r[5] == "inf"));
+}
+
+#[test]
+fn the_table_has_a_line_per_setting_with_its_numbers_right_aligned() {
+    let measured = quick_showcase(32, 24);
+    let text = table(&measured);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 2 + measured.len(), "header, rule, settings");
+    let rule: Vec<&str> = lines[1].trim_matches('|').split('|').collect();
+    assert_eq!(rule.len(), 8, "{}", lines[1]);
+    assert!(rule[..2].iter().all(|c| !c.ends_with(':')), "names left");
+    assert!(rule[2..].iter().all(|c| c.ends_with(':')), "numbers right");
+    for (line, m) in lines[2..].iter().zip(&measured) {
+        let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).collect();
+        assert_eq!(cells[..2], [m.setting.knob.name(), &m.setting.value]);
+        assert_eq!(cells[3], m.rays.to_string());
+    }
+}
+
+#[test]
+fn nothing_on_the_pareto_front_is_beaten_on_both_counts() {
+    let measured = quick_showcase(32, 24);
+    let front = pareto(&measured);
+    assert!(!front.is_empty());
+    for pair in front.windows(2) {
+        assert!(pair[0].seconds <= pair[1].seconds, "fastest first");
+    }
+    for m in &front {
+        let beaten = measured
+            .iter()
+            .any(|o| o.seconds < m.seconds && o.rmse < m.rmse);
+        assert!(!beaten, "{:?} {}", m.setting.knob, m.setting.value);
     }
 }

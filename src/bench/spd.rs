@@ -1,0 +1,195 @@
+//! The SPD scenes rendered whole-process, by raybook and by POV-Ray: one
+//! table row per scene.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::Instant;
+
+use super::{BenchArgs, median, povray, scene_name, scene_progress, table};
+
+/// What the runs of every scene share.
+struct Setup {
+    size: u32,
+    runs: u32,
+    threads: u32,
+    /// Where the pictures go.
+    pictures: PathBuf,
+    /// Whether POV-Ray renders too.
+    povray: bool,
+}
+
+/// One scene's whole-process times.
+struct SceneTiming {
+    name: String,
+    primitives: usize,
+    /// raybook's median wall time.
+    seconds: f64,
+    /// Rays raybook traced in one run.
+    rays: u64,
+    /// POV-Ray's median wall time, if it rendered the scene.
+    povray_seconds: Option<f64>,
+}
+
+/// The table of raybook against POV-Ray, under a line saying how it was
+/// measured, and where the pictures are.
+pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Result<String, String> {
+    let setup = Setup {
+        size: args.size,
+        runs: args.runs,
+        threads,
+        pictures: pictures_folder()?,
+        povray: use_povray(args.no_povray),
+    };
+    let bar = scene_progress(scenes.len(), args.quiet);
+    let mut timings = Vec::with_capacity(scenes.len());
+    for scene in scenes {
+        bar.set_message(scene_name(scene));
+        timings.push(time_scene(scene, &setup)?);
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let Setup { size, runs, .. } = setup;
+    Ok(format!(
+        "{size}×{size} pixels, 1 sample per pixel, {threads} threads, median of {runs} runs, \
+         whole process\n\n{}\npictures in {}",
+        timings_table(&timings),
+        setup.pictures.display()
+    ))
+}
+
+/// Whether to run POV-Ray: if installed, unless told not to.
+fn use_povray(no_povray: bool) -> bool {
+    if no_povray {
+        return false;
+    }
+    let installed = povray::installed();
+    if !installed {
+        eprintln!("note: povray is not installed; timing raybook alone");
+    }
+    installed
+}
+
+/// A new folder for this run's pictures, in the system's temporary folder.
+fn pictures_folder() -> Result<PathBuf, String> {
+    let folder = std::env::temp_dir().join(format!("raybook-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&folder)
+        .map_err(|e| format!("cannot create {}: {e}", folder.display()))?;
+    Ok(folder)
+}
+
+/// Times raybook on one scene, and POV-Ray on its .pov beside it if any.
+fn time_scene(scene: &Path, setup: &Setup) -> Result<SceneTiming, String> {
+    let name = scene_name(scene);
+    let primitives = crate::nff::load(scene)
+        .map_err(|e| e.to_string())?
+        .objects
+        .len();
+    let picture = setup.pictures.join(format!("{name}.png"));
+    let ours = raybook_command(scene, &picture, setup)?;
+    let (seconds, stdout) = time_process(ours, setup.runs)?;
+    let pov = scene.with_extension("pov");
+    let povray_seconds = if setup.povray && pov.exists() {
+        let picture = setup.pictures.join(format!("{name}-pov.png"));
+        let theirs = povray::command(&pov, &picture, setup.size, setup.threads);
+        Some(time_process(theirs, setup.runs)?.0)
+    } else {
+        None
+    };
+    Ok(SceneTiming {
+        name,
+        primitives,
+        seconds,
+        rays: rays_of(&stdout),
+        povray_seconds,
+    })
+}
+
+/// This binary rendering `scene` to `png`: `raybook render` at the set-up's
+/// size and threads.
+fn raybook_command(scene: &Path, png: &Path, setup: &Setup) -> Result<Command, String> {
+    let raybook = std::env::current_exe().map_err(|e| format!("cannot find raybook: {e}"))?;
+    let (size, threads) = (setup.size.to_string(), setup.threads.to_string());
+    let mut command = Command::new(raybook);
+    command
+        .arg("render")
+        .arg(scene)
+        .arg("-o")
+        .arg(png)
+        .args(["--quiet", "--width", &size, "--height", &size])
+        .args(["--threads", &threads]);
+    Ok(command)
+}
+
+/// Wall time of `command`, run to completion `runs` times: the median in
+/// seconds, and the standard output of the last run.
+fn time_process(mut command: Command, runs: u32) -> Result<(f64, String), String> {
+    let mut seconds = Vec::new();
+    let mut stdout = String::new();
+    for _ in 0..runs {
+        let start = Instant::now();
+        let output = command
+            .stderr(Stdio::piped())
+            .output()
+            .map_err(|e| format!("cannot run {command:?}: {e}"))?;
+        seconds.push(start.elapsed().as_secs_f64());
+        if !output.status.success() {
+            let err = String::from_utf8_lossy(&output.stderr);
+            return Err(format!("{command:?} failed: {}", err.trim()));
+        }
+        stdout = String::from_utf8_lossy(&output.stdout).into_owned();
+    }
+    Ok((median(seconds), stdout))
+}
+
+/// The ray count in `raybook render`'s report ("N rays: ..."), or 0.
+fn rays_of(report: &str) -> u64 {
+    report
+        .lines()
+        .find_map(|l| {
+            l.split_once(" rays: ")
+                .and_then(|(n, _)| n.trim().parse().ok())
+        })
+        .unwrap_or(0)
+}
+
+/// The timings as a Markdown table, one row per scene.
+fn timings_table(timings: &[SceneTiming]) -> String {
+    let header = [
+        "scene",
+        "primitives",
+        "raybook",
+        "rays",
+        "rays/s",
+        "POV-Ray 3.7",
+        "POV-Ray / raybook",
+    ];
+    table::markdown(header, timings.iter().map(SceneTiming::cells), 1)
+}
+
+impl SceneTiming {
+    /// The table's cells for this scene; a dash where POV-Ray did not run.
+    fn cells(&self) -> [String; 7] {
+        let povray = |show: &dyn Fn(f64) -> String| self.povray_seconds.map_or("–".into(), show);
+        [
+            self.name.clone(),
+            self.primitives.to_string(),
+            format!("{:.2} s", self.seconds),
+            format!("{:.1} M", self.rays as f64 / 1e6),
+            format!("{:.1} M", self.rays as f64 / self.seconds / 1e6),
+            povray(&|theirs| format!("{theirs:.2} s")),
+            povray(&|theirs| format!("{:.2}", theirs / self.seconds)),
+        ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rays_of;
+
+    #[test]
+    fn the_ray_count_is_read_from_the_render_report() {
+        let report = "wrote x.png (64×64)\n  1234567 rays: 4096 primary, 8 shadow\n";
+        assert_eq!(rays_of(report), 1_234_567);
+        assert_eq!(rays_of("no count here"), 0);
+    }
+}
