@@ -2,7 +2,7 @@
 //! files are refused with the line, and the BVH sees what brute force sees.
 
 use raybook::nff;
-use raybook::toolkit::scene::{Light, Shape};
+use raybook::toolkit::scene::{Light, Shape, TraceSpec};
 use raybook::toolkit::snapshot::workspace_root;
 use raybook::toolkit::{Color, Scene, SceneError, Vec3};
 use raybook::tracer::{Termination, World, render_complete};
@@ -132,8 +132,15 @@ fn bad_files_are_refused_with_the_line() {
         (12, "f 2 0.5 0.25 0.8 0.4 30 0.5 1.5", 12, "colour"),
         (10, "l 4 3", 10, "l x y z"),
         (14, "p 2", 14, "3 or more"),
-        (5, "at 0 -5 1", 3, "view direction"),
-        (6, "angle 180", 3, "angle"),
+        (5, "at 0 -5 1", 5, "looks nowhere"),
+        (6, "up 0 5 -1", 6, "parallel to the view direction"),
+        (6, "up 0 0 0", 6, "non-zero length"),
+        (6, "angle 45", 7, "`angle` twice"),
+        (7, "angle 180", 7, "field of view"),
+        (7, "angle 0", 7, "strictly between 0 and 180"),
+        (9, "resolution 0 48", 9, "from 1 to 16384"),
+        (9, "resolution 64 16385", 9, "found 16385"),
+        (9, "resolution 64 47.5", 9, "whole number"),
         (4, "form 0 -5 1", 4, "expected a viewpoint line"),
         (21, "0 1 2 0 0 0", 21, "normal must not be zero"),
     ];
@@ -142,6 +149,34 @@ fn bad_files_are_refused_with_the_line() {
         assert_eq!(e.line, Some(error_line), "{text}: {e}");
         assert!(e.message.contains(words), "{text}: {e}");
     }
+}
+
+#[test]
+fn the_viewpoint_is_checked_by_the_rules_of_toml_scenes() {
+    // The same words as a TOML scene's, with NFF's names and the line's field.
+    let e = broken(&with_line(5, "at 0 -5 1"));
+    assert_eq!(e.path, "v.at");
+    assert!(e.message.contains("`at` equals `from`"), "{e}");
+    let e = broken(&with_line(9, "resolution 64 0"));
+    assert_eq!((e.path.as_str(), e.column), ("v.resolution", Some(15)));
+    let toml = "[camera]\neye = [0, -5, 1]\nlook_at = [0, 0, 0]\nup = [0, 0, 1]\nvfov = 45\n\
+                [image]\nwidth = 64\nheight = 0\n";
+    let same = Scene::parse(toml, "bad.toml").unwrap_err();
+    assert_eq!(e.message, same.message);
+    let e = broken(&with_line(7, "angle 200"));
+    assert_eq!(e.path, "v.angle");
+    let toml = toml.replace("vfov = 45", "vfov = 200");
+    assert_eq!(
+        e.message,
+        Scene::parse(&toml, "bad.toml").unwrap_err().message
+    );
+}
+
+#[test]
+fn an_nff_scene_gets_the_defaults_of_a_toml_scene() {
+    let scene = nff::parse(GOOD, "good.nff").unwrap();
+    assert_eq!(scene.trace, TraceSpec::default());
+    assert_eq!(scene.image.samples, 1);
 }
 
 #[test]
@@ -180,4 +215,62 @@ fn bvh_and_brute_force_give_the_same_picture_on_the_spd_scenes() {
         let same = render(&scene, &scene.objects[..]) == render(&scene, &bvh);
         assert!(same, "{} differs", path.display());
     }
+}
+
+/// The primary rays of `raybook render <balls-1.nff> --samples N`, an 8×8 picture.
+fn primary_rays_rendered(samples: &str) -> u64 {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("nff-samples-{}-{samples}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_raybook"))
+        .arg("render")
+        .arg(spd("balls-1.nff"))
+        .args([
+            "--samples",
+            samples,
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--quiet",
+        ])
+        .arg("-o")
+        .arg(dir.join("x.png"))
+        .output()
+        .unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        output.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    // The statistics line: "N rays: P primary, ...".
+    let primary = stdout
+        .split(" primary")
+        .next()
+        .and_then(|before| before.rsplit(' ').next())
+        .and_then(|count| count.parse().ok());
+    primary.unwrap_or_else(|| panic!("no count of primary rays in:\n{stdout}"))
+}
+
+#[test]
+fn render_takes_the_sample_count_of_the_command_line_for_nff_too() {
+    assert_eq!(primary_rays_rendered("1"), 8 * 8);
+    assert_eq!(primary_rays_rendered("4"), 4 * 8 * 8, "--samples 4");
+}
+
+#[test]
+fn the_render_arguments_read_nff_with_every_override() {
+    let args = raybook::toolkit::cli::RenderArgs {
+        scene: Some(spd("balls-1.nff")),
+        width: Some(8),
+        height: Some(6),
+        samples: Some(4),
+        ..Default::default()
+    };
+    let (scene, name) = args.load_scene(&raybook::CHAPTER).unwrap();
+    let image = scene.image;
+    assert_eq!((image.width, image.height, image.samples), (8, 6, 4));
+    assert!(name.ends_with("balls-1.nff"), "{name}");
 }

@@ -1,11 +1,12 @@
-//! Nothing panics on any input: mutated scene files are either refused with
-//! an error or rendered.
+//! Nothing panics on any input: mutated scene files, TOML and NFF, are either
+//! refused with an error or rendered.
 
 mod common;
 
 use proptest::prelude::*;
 use raybook::render;
-use raybook::toolkit::Scene;
+use raybook::toolkit::snapshot::workspace_root;
+use raybook::toolkit::{Scene, SceneError};
 
 /// Every scene file of the repository, as mutation seeds.
 fn seeds() -> Vec<String> {
@@ -53,7 +54,46 @@ enum Mutation {
     Replace(usize, usize, usize),
 }
 
+/// The small SPD scenes (NFF) of the repository, as mutation seeds.
+fn nff_seeds() -> Vec<String> {
+    ["balls-1.nff", "balls-2.nff", "mount-3.nff", "tetra-3.nff"]
+        .map(|name| std::fs::read_to_string(workspace_root().join("scenes/spd").join(name)))
+        .map(Result::unwrap)
+        .to_vec()
+}
+
+/// NFF's tokens that are likely to break something.
+const NFF_TOKENS: &[&str] = &[
+    "nan",
+    "inf",
+    "-1",
+    "0",
+    "0 0 0",
+    "1e39",
+    "1e-45",
+    "16385",
+    "3.5",
+    "\n",
+    "#",
+    "é",
+    "\u{0}",
+    "\nv\n",
+    "\np 3\n",
+    "\npp 3\n",
+    "\ns 0 0 0 1\n",
+    "\nf 1 1 1 1 0 1 0 1\n",
+    "\nl 1 1 1\n",
+    "\nc\n",
+    "\nresolution 1 1\n",
+    "\nangle 179.99999\n",
+    "\nup 0 0 0\n",
+];
+
 fn apply(text: &str, m: &Mutation) -> String {
+    apply_with(text, m, TOKENS)
+}
+
+fn apply_with(text: &str, m: &Mutation, tokens: &[&str]) -> String {
     let cut = |i: usize| {
         let mut i = i % (text.len() + 1);
         while !text.is_char_boundary(i) {
@@ -67,7 +107,7 @@ fn apply(text: &str, m: &Mutation) -> String {
             format!(
                 "{}{}{}",
                 &text[..at],
-                TOKENS[token % TOKENS.len()],
+                tokens[token % tokens.len()],
                 &text[at..]
             )
         }
@@ -82,7 +122,7 @@ fn apply(text: &str, m: &Mutation) -> String {
             format!(
                 "{}{}{}",
                 &text[..a],
-                TOKENS[token % TOKENS.len()],
+                tokens[token % tokens.len()],
                 &text[b..]
             )
         }
@@ -111,16 +151,39 @@ proptest! {
         for m in &mutations {
             text = apply(&text, m);
         }
-        match Scene::parse(&text, "fuzz.toml") {
-            Ok(scene) => {
-                // What parses must render, without a panic, to finite values.
-                let (image, _) = render(&scene.with_size(8, 6), || {});
-                prop_assert!(image.pixels.iter().all(|c| c.is_finite()));
-            }
-            Err(e) => {
-                prop_assert_eq!(e.file.as_str(), "fuzz.toml");
-                prop_assert!(!e.message.is_empty());
-            }
+        check(Scene::parse(&text, "fuzz.toml"), "fuzz.toml")?;
+    }
+}
+
+/// What a parser made of a mutated scene: rendered small, or refused well.
+fn check(parsed: Result<Scene, SceneError>, file: &str) -> Result<(), TestCaseError> {
+    match parsed {
+        Ok(scene) => {
+            // What parses must render, without a panic, to finite values.
+            let (image, _) = render(&scene.with_size(8, 6), || {});
+            prop_assert!(image.pixels.iter().all(|c| c.is_finite()));
         }
+        Err(e) => {
+            prop_assert_eq!(e.file.as_str(), file);
+            prop_assert!(!e.message.is_empty());
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
+
+    #[test]
+    fn mutated_nff_scenes_never_panic(
+        seed in any::<usize>(),
+        mutations in prop::collection::vec(mutation(), 1..4),
+    ) {
+        let seeds = nff_seeds();
+        let mut text = seeds[seed % seeds.len()].clone();
+        for m in &mutations {
+            text = apply_with(&text, m, NFF_TOKENS);
+        }
+        check(raybook::nff::parse(&text, "fuzz.nff"), "fuzz.nff")?;
     }
 }

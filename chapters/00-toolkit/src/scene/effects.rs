@@ -28,16 +28,6 @@ impl Effect {
             Effect::Refraction => "refraction",
         }
     }
-
-    /// The chapter that introduces the effect: its number and its folder.
-    pub fn chapter(self) -> (u32, &'static str) {
-        match self {
-            Effect::Lambert | Effect::Spot => (3, "chapters/03-lambert"),
-            Effect::Shadows => (4, "chapters/04-shadows"),
-            Effect::Reflection => (5, "chapters/05-reflection"),
-            Effect::Refraction => (6, "chapters/06-refraction"),
-        }
-    }
 }
 
 impl fmt::Display for Effect {

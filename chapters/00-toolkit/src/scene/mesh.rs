@@ -5,6 +5,7 @@ use std::path::Path;
 use glam::Vec3;
 
 use super::Shape;
+use super::rules::has_area;
 
 /// The triangles of an OBJ file: faces with more corners are split into
 /// fans, corners with normals (`vn`) make smooth triangles. Faces without
@@ -64,10 +65,4 @@ fn corner(coordinates: &[f32], i: u32) -> Result<Vec3, String> {
                 i + 1
             )
         })
-}
-
-/// Not (nearly) collinear: |e1 × e2| > 1e-6 |e1| |e2|, as for scene triangles.
-fn has_area([a, b, c]: [Vec3; 3]) -> bool {
-    let (e1, e2) = (b - a, c - a);
-    e1.cross(e2).length() > 1e-6 * e1.length() * e2.length()
 }

@@ -1,17 +1,23 @@
 //! The scene: what a scene file describes, checked and ready to render.
 //!
-//! Every chapter reads the same format (see `file.rs` for the TOML side). A
-//! chapter that cannot simulate something yet still reads it; it simply does
-//! not use it. Everything here has been validated: finite numbers, unit
-//! normals, positive radii, triangles with area, known material names.
+//! Every chapter reads the same format (see `file/` for the TOML side); the
+//! `nff` module reads the SPD scenes' format into the same [`Scene`], and
+//! `mesh.rs` the OBJ files a TOML scene may name. Both formats check with
+//! one set of rules (`rules.rs`). A chapter that cannot simulate something
+//! yet still reads it; it simply does not use it. Everything here has been
+//! validated: finite numbers, unit normals, positive radii, triangles with
+//! area, known material names.
 
 mod effects;
 mod error;
 mod file;
 mod mesh;
+pub mod nff;
+mod rules;
 
-pub use file::is_square_sample_count;
 use std::path::Path;
+
+pub use rules::{MAX_IMAGE_SIDE, is_square_sample_count};
 
 pub use effects::Effects;
 pub use error::SceneError;
@@ -62,6 +68,18 @@ pub struct TraceSpec {
     pub min_weight: f32,
     /// `None`: every effect the scene calls for; `Some`: only these.
     pub effects: Option<Vec<Effect>>,
+}
+
+impl Default for TraceSpec {
+    /// What a scene gets that does not say: 5 bounces, weights down to
+    /// 0.001, every effect it calls for.
+    fn default() -> Self {
+        TraceSpec {
+            max_depth: 5,
+            min_weight: 0.001,
+            effects: None,
+        }
+    }
 }
 
 /// The effects a tracer can simulate, each introduced by one chapter.
