@@ -3,23 +3,15 @@
 //! The tracer is the most advanced chapter's; this crate adds the tools
 //! around it (the `raybook` command line).
 
-/// The complete tracer: the most advanced chapter, and the intersection
-/// routines of chapter 2 that it is built on.
-pub mod tracer {
-    pub use ch02_hits::{
-        hit_at, intersect, intersect_plane, intersect_sphere, intersect_triangle, sphere_point,
-        sphere_roots, triangle_normal,
-    };
-    pub use ch07_termination::*;
-}
-
 pub use ch07_termination::toolkit;
+/// NFF, the SPD scenes' format: read by the toolkit, beside TOML and OBJ.
+pub use toolkit::scene::nff;
 
 pub mod accuracy;
 pub mod bench;
 pub mod handout;
-pub mod nff;
 pub mod progress;
+pub mod tracer;
 pub mod verify;
 
 use toolkit::cli::Chapter;
@@ -30,7 +22,9 @@ use toolkit::{Image, Scene, Stats};
 pub const CHAPTER: Chapter = tracer::CHAPTER;
 
 /// Renders a scene with the complete tracer and the scene's own criteria,
-/// its rays traced against a BVH of the scene (chapter 8).
+/// its rays traced against a BVH of the scene (chapter 8), by the tracer
+/// the scene calls for ([`tracer::render_complete`]).
 pub fn render(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
-    ch08_bvh::render_bvh(scene, tracer::Termination::of(scene), on_row)
+    let bvh = ch08_bvh::Bvh::build(&scene.objects);
+    tracer::render_complete(scene, &bvh, tracer::Termination::of(scene), on_row)
 }

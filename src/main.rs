@@ -3,7 +3,7 @@
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use raybook::toolkit::cli::{RenderArgs, run, run_loaded};
+use raybook::toolkit::cli::{RenderArgs, run};
 use raybook::{CHAPTER, render};
 
 /// raybook: a step-by-step ray tracer. Without a command, renders the
@@ -40,13 +40,9 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    raybook::toolkit::cli::end_quietly_when_output_closes();
     match Cli::parse().command {
-        Some(Command::Render(args)) => {
-            let loaded = raybook::nff::load_scene(&args, &CHAPTER);
-            run_loaded(&CHAPTER, &args, loaded, |scene, on_row| {
-                render(scene, on_row)
-            })
-        }
+        Some(Command::Render(args)) => run(&CHAPTER, &args, |scene, on_row| render(scene, on_row)),
         Some(Command::Bench(args)) => raybook::bench::run(&args),
         Some(Command::Accuracy(args)) => raybook::accuracy::main(&args),
         Some(Command::Verify(args)) => raybook::verify::main(&args),

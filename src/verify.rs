@@ -7,64 +7,73 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use include_dir::{Dir, include_dir};
+
+use crate::toolkit::chapters::{self, ChapterEntry, VerifyReference};
 use crate::toolkit::compare::{Tolerance, Verdict, compare, diff_image};
 use crate::toolkit::image::{encode_png, write_atomically};
 
 /// A chapter's reference picture for its default scene.
+#[derive(Debug, Clone, Copy)]
 pub struct Reference {
-    /// The chapter's folder under chapters/.
-    pub chapter: &'static str,
-    /// How to render the same picture with the workbook's own binary.
-    pub command: &'static str,
+    /// The chapter, as chapters/chapters.toml lists it.
+    pub chapter: &'static ChapterEntry,
+    /// The reference picture, `snapshots/<folder>/<snapshot>.snap.png`.
     pub png: &'static [u8],
 }
 
-/// The references, built into the binary so that it works from anywhere.
-pub const REFERENCES: &[Reference] = &[
-    Reference {
-        chapter: "01-rays",
-        command: "cargo run -p ch01-rays -- --width 160 --height 120",
-        png: include_bytes!("../snapshots/01-rays/default.snap.png"),
-    },
-    Reference {
-        chapter: "02-hits",
-        command: "cargo run -p ch02-hits -- --width 160 --height 120 --view flat",
-        png: include_bytes!("../snapshots/02-hits/flat.snap.png"),
-    },
-    Reference {
-        chapter: "03-lambert",
-        command: "cargo run -p ch03-lambert -- --width 160 --height 120",
-        png: include_bytes!("../snapshots/03-lambert/default.snap.png"),
-    },
-    Reference {
-        chapter: "04-shadows",
-        command: "cargo run -p ch04-shadows -- --width 160 --height 120",
-        png: include_bytes!("../snapshots/04-shadows/default.snap.png"),
-    },
-    Reference {
-        chapter: "05-reflection",
-        command: "cargo run -p ch05-reflection -- --width 160 --height 120",
-        png: include_bytes!("../snapshots/05-reflection/default.snap.png"),
-    },
-    Reference {
-        chapter: "06-refraction",
-        command: "cargo run -p ch06-refraction -- --width 160 --height 120",
-        png: include_bytes!("../snapshots/06-refraction/default.snap.png"),
-    },
-    Reference {
-        chapter: "07-termination",
-        command: "cargo run -p ch07-termination -- --width 160 --height 120",
-        png: include_bytes!("../snapshots/07-termination/default.snap.png"),
-    },
-];
+/// The reference pictures, built into the binary so that it works from
+/// anywhere; which picture is a chapter's comes from chapters/chapters.toml.
+static SNAPSHOTS: Dir = include_dir!("$CARGO_MANIFEST_DIR/snapshots");
+
+impl Reference {
+    /// How to render the same picture with the workbook's own binary.
+    pub fn command(&self) -> String {
+        let mut command = format!(
+            "cargo run -p {} -- --width 160 --height 120",
+            self.chapter.package()
+        );
+        for arg in self.verify().args.iter() {
+            command.push(' ');
+            command.push_str(arg);
+        }
+        command
+    }
+
+    fn verify(&self) -> &'static VerifyReference {
+        self.chapter
+            .verify
+            .as_ref()
+            .expect("a chapter with a reference")
+    }
+}
+
+/// Every chapter's reference, in the order of the chapters.
+pub fn references() -> Vec<Reference> {
+    chapters::all()
+        .iter()
+        .filter_map(|chapter| {
+            let verify = chapter.verify.as_ref()?;
+            let path = format!("{}/{}.snap.png", chapter.folder, verify.snapshot);
+            let file = SNAPSHOTS
+                .get_file(&path)
+                .unwrap_or_else(|| panic!("snapshots/{path}, named in chapters.toml, is missing"));
+            Some(Reference {
+                chapter,
+                png: file.contents(),
+            })
+        })
+        .collect()
+}
 
 /// The reference of a chapter named by number (`3`, `03`), folder
 /// (`03-lambert`) or package (`ch03-lambert`).
-pub fn reference(name: &str) -> Option<&'static Reference> {
-    let name = name.trim_start_matches("ch");
-    REFERENCES.iter().find(|r| {
-        let number = &r.chapter[..2];
-        name == r.chapter || name == number || name.parse::<u32>().ok() == number.parse().ok()
+pub fn reference(name: &str) -> Option<Reference> {
+    let number = name.parse::<u32>().ok();
+    references().into_iter().find(|r| {
+        r.chapter.folder == name
+            || r.chapter.package() == name
+            || number == Some(r.chapter.number())
     })
 }
 
@@ -117,7 +126,10 @@ pub struct VerifyArgs {
 /// Runs `raybook verify`: exit code 0 when the picture passes.
 pub fn main(args: &VerifyArgs) -> ExitCode {
     let Some(reference) = reference(&args.chapter) else {
-        let names: Vec<&str> = REFERENCES.iter().map(|r| r.chapter).collect();
+        let names: Vec<&str> = references()
+            .iter()
+            .map(|r| r.chapter.folder.as_str())
+            .collect();
         eprintln!(
             "error: no chapter {:?}; the chapters with a reference are {}",
             args.chapter,
@@ -129,12 +141,12 @@ pub fn main(args: &VerifyArgs) -> ExitCode {
         .diff
         .clone()
         .unwrap_or_else(|| args.image.with_extension("diff.png"));
-    match verify(reference, &args.image, &diff) {
+    match verify(&reference, &args.image, &diff) {
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE
         }
-        Ok(outcome) => report(reference, &outcome),
+        Ok(outcome) => report(&reference, &outcome),
     }
 }
 
@@ -143,7 +155,7 @@ fn report(reference: &Reference, outcome: &Outcome) -> ExitCode {
     println!(
         "{}: chapter {}: {}",
         if passed { "PASS" } else { "FAIL" },
-        reference.chapter,
+        reference.chapter.folder,
         outcome.verdict
     );
     if let Some(diff) = &outcome.diff {
@@ -152,7 +164,9 @@ fn report(reference: &Reference, outcome: &Outcome) -> ExitCode {
     if let Verdict::WrongSize { expected, .. } = outcome.verdict {
         println!(
             "render the chapter's default scene at {}×{}; the workbook's own picture comes from\n  {}",
-            expected.0, expected.1, reference.command
+            expected.0,
+            expected.1,
+            reference.command()
         );
     }
     if passed {

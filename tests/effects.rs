@@ -167,7 +167,7 @@ fn the_command_line_can_switch_effects_off() {
 fn an_earlier_chapter_names_the_chapter_that_would_simulate_the_rest() {
     let scene = chapter_scene("06-refraction/scenes/default.toml");
     let chapter3 = Chapter {
-        effects: set(&[Effect::Lambert, Effect::Spot]),
+        package: "ch03-lambert",
         ..raybook::CHAPTER
     };
     let plan = EffectPlan::new(&chapter3, &scene, &[]);

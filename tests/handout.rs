@@ -4,14 +4,15 @@
 //! writes it. (That the reference passes is the rest of `cargo test`.)
 //!
 //! The handout is built with cargo inside `target/handout-check/`, with its
-//! own CARGO_TARGET_DIR: the `cargo test` running this file holds the lock on
-//! the main target folder. Dependencies compile there once and are reused by
-//! later runs; the variants below are written into one folder, file by file
-//! only where they differ, so cargo rebuilds only the chapter that changed.
-//! That target folder belongs to this check alone: cargo names a workspace
-//! member's artifacts by its path inside the workspace, so building another
-//! copy of the workbook there would leave artifacts that cargo takes for
-//! this copy's.
+//! own CARGO_TARGET_DIR: cargo names a workspace member's artifacts by its
+//! path inside the workspace, so building another copy of the workbook in
+//! the main target folder would leave artifacts that cargo takes for the
+//! reference's. The registry dependencies are another matter: their
+//! artifacts are the same in both, so the check's target folder starts with
+//! hard links to those the main build has compiled already, and the check
+//! compiles only the workbook's own crates. The variants below are written
+//! into one folder, file by file only where they differ, so cargo rebuilds
+//! only the chapter that changed.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -20,9 +21,87 @@ use std::time::Instant;
 
 use raybook::handout::{Region, workspace_files, workspace_regions, write_tree};
 use raybook::progress::parse;
+use raybook::toolkit::chapters::{self, ChapterEntry};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The check's own target folder.
+fn check_target() -> PathBuf {
+    root().join("target/handout-check/target")
+}
+
+/// Links the registry dependencies that the main build (the `cargo test`
+/// running this file) has compiled into the check's target folder, where
+/// they are not there yet: their artifacts, fingerprints and build-script
+/// outputs. The workbook's own crates are left out; cargo builds them anew.
+fn share_dependencies() {
+    // CARGO_TARGET_TMPDIR is <target>/tmp; the tests are built in <target>/debug.
+    let main = Path::new(env!("CARGO_TARGET_TMPDIR")).join("../debug");
+    let metadata = cargo_metadata::MetadataCommand::new()
+        .current_dir(root())
+        .exec()
+        .expect("cargo metadata runs");
+    let registry: Vec<_> = metadata
+        .packages
+        .iter()
+        .filter(|p| p.source.is_some())
+        .collect();
+    let packages: BTreeSet<String> = registry.iter().map(|p| p.name.to_string()).collect();
+    let crates: BTreeSet<String> = registry
+        .iter()
+        .flat_map(|p| p.targets.iter().map(|t| t.name.replace('-', "_")))
+        .collect();
+    // deps/lib<crate>-<hash>.rlib and <crate>-<hash>.d; .fingerprint/ and
+    // build/ hold <package>-<hash> folders.
+    let stem = |name: &str| {
+        let name = name.strip_prefix("lib").unwrap_or(name);
+        name.rsplit_once('-').map(|(stem, _)| stem.to_owned())
+    };
+    link_matching(
+        &main.join("deps"),
+        &check_target().join("debug/deps"),
+        |n| stem(n).is_some_and(|s| crates.contains(&s)),
+    );
+    for folder in [".fingerprint", "build"] {
+        link_matching(
+            &main.join(folder),
+            &check_target().join("debug").join(folder),
+            |n| {
+                n.rsplit_once('-')
+                    .is_some_and(|(s, _)| packages.contains(s))
+            },
+        );
+    }
+}
+
+/// Hard-links each entry of `from` whose name is chosen (folders with all
+/// they hold) into `to`, unless it is there already.
+fn link_matching(from: &Path, to: &Path, chosen: impl Fn(&str) -> bool) {
+    let Ok(entries) = std::fs::read_dir(from) else {
+        return;
+    };
+    std::fs::create_dir_all(to).unwrap();
+    for entry in entries {
+        let entry = entry.unwrap();
+        let name = entry.file_name().into_string().unwrap();
+        if chosen(&name) {
+            link_tree(&entry.path(), &to.join(&name));
+        }
+    }
+}
+
+fn link_tree(from: &Path, to: &Path) {
+    if from.is_dir() {
+        std::fs::create_dir_all(to).unwrap();
+        for entry in std::fs::read_dir(from).unwrap() {
+            let entry = entry.unwrap();
+            link_tree(&entry.path(), &to.join(entry.file_name()));
+        }
+    } else if !to.exists() && std::fs::hard_link(from, to).is_err() {
+        std::fs::copy(from, to).unwrap();
+    }
 }
 
 /// cargo in `dir`, building into the check's own target folder, offline (the
@@ -33,10 +112,7 @@ fn cargo(dir: &Path, args: &[&str]) -> (bool, String) {
     let out = Command::new(cargo)
         .args(args)
         .current_dir(dir)
-        .env(
-            "CARGO_TARGET_DIR",
-            root().join("target/handout-check/target"),
-        )
+        .env("CARGO_TARGET_DIR", check_target())
         .env_remove("CARGO_MAKEFLAGS")
         .output()
         .expect("cargo runs");
@@ -70,10 +146,17 @@ fn write_variant(work: &Path, select: impl Fn(&Region) -> bool) {
     assert_eq!(written.files, keep.len());
 }
 
+/// The chapters the handout takes exercises out of (chapters/chapters.toml).
+fn exercise_chapters() -> Vec<&'static ChapterEntry> {
+    chapters::all().iter().filter(|c| c.exercises).collect()
+}
+
 #[test]
-fn every_chapter_from_1_to_7_has_one_to_three_exercises() {
+fn every_chapter_with_exercises_has_one_to_three() {
     let regions = workspace_regions(&root()).unwrap();
-    for chapter in 1..=7 {
+    let numbers: Vec<u32> = exercise_chapters().iter().map(|c| c.number()).collect();
+    assert_eq!(numbers, (1..=7).collect::<Vec<_>>());
+    for chapter in numbers {
         let ids: Vec<&str> = regions
             .iter()
             .filter(|(_, _, r)| r.chapter() == Some(chapter))
@@ -105,20 +188,17 @@ fn the_handout_compiles_and_each_exercise_has_a_failing_test() {
     let start = Instant::now();
     let work = root().join("target/handout-check/work");
     std::fs::create_dir_all(&work).unwrap();
+    share_dependencies();
+    eprintln!("dependencies shared ({:.0?})", start.elapsed());
     let regions = workspace_regions(&root()).unwrap();
-    let chapters: BTreeSet<u32> = regions.iter().filter_map(|(_, _, r)| r.chapter()).collect();
 
     // Each chapter's exercises taken out alone: its own tests must fail,
     // and each exercise's todo! must be among the panics.
-    for &chapter in &chapters {
+    for entry in exercise_chapters() {
         let step = Instant::now();
+        let chapter = entry.number();
         write_variant(&work, |r| r.chapter() == Some(chapter));
-        let folder = std::fs::read_dir(root().join("chapters"))
-            .unwrap()
-            .map(|e| e.unwrap().file_name().into_string().unwrap())
-            .find(|f| f.starts_with(&format!("{chapter:02}-")))
-            .unwrap();
-        let package = format!("ch{folder}");
+        let package = entry.package();
         let (ok, output) = cargo(
             &work,
             &[
@@ -157,7 +237,9 @@ fn the_handout_compiles_and_each_exercise_has_a_failing_test() {
         );
     }
 
-    // The handout itself, every exercise taken out: it compiles, tests and all.
+    // The handout itself, every exercise taken out: every crate and binary
+    // compiles (each chapter's tests compiled above, with its own exercises
+    // out; taking out the others' changes no signature).
     let step = Instant::now();
     write_variant(&work, |_| true);
     let (ok, output) = cargo(
@@ -166,7 +248,8 @@ fn the_handout_compiles_and_each_exercise_has_a_failing_test() {
             "build",
             "--offline",
             "--workspace",
-            "--tests",
+            "--lib",
+            "--bins",
             "--color",
             "never",
         ],

@@ -79,13 +79,13 @@ impl Rng {
 // ---------------------------------------------------------------- spheres --
 
 #[test]
-fn case_1_worked_example_hits_at_1_and_3() {
+fn worked_example_hits_at_1_and_3() {
     let ray = Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(0.0, -1.0, 0.0));
     assert_eq!(sphere_roots(Vec3::ZERO, 1.0, &ray), Some((1.0, 3.0)));
 }
 
 #[test]
-fn case_2_tangent_ray_touches_once_and_near_misses_are_decided() {
+fn tangent_ray_touches_once_and_near_misses_are_decided() {
     // Along x, 1 unit (exactly) above the unit sphere's centre: tangent.
     let past = |height: f32| Ray::new(Vec3::new(-5.0, height, 0.0), Vec3::X);
     let (t0, t1) = sphere_roots(Vec3::ZERO, 1.0, &past(1.0)).expect("a tangent ray touches");
@@ -196,7 +196,7 @@ fn far_tiny_sphere(origin: Vec3, direction: Vec3, side: Vec3, naive: &mut NaiveF
 }
 
 #[test]
-fn case_3_far_tiny_sphere_is_hit_where_the_naive_formula_fails() {
+fn far_tiny_sphere_is_hit_where_the_naive_formula_fails() {
     // The naive discriminant b² − 4ac is the difference of two numbers near
     // 4·10⁸, where f32 steps by 32, while its true value is 4·(r² − offset²),
     // below 4·10⁻⁴: what is left is rounding noise.
@@ -232,7 +232,7 @@ fn case_3_far_tiny_sphere_is_hit_where_the_naive_formula_fails() {
 }
 
 #[test]
-fn case_4_huge_sphere_close_to_the_ray_origin() {
+fn huge_sphere_close_to_the_ray_origin() {
     // The surface of a sphere of radius 10⁴ passes through y = 0; the ray
     // starts 10⁻² above it and points at the centre.
     let center = Vec3::new(0.0, -1e4, 0.0);
@@ -280,7 +280,7 @@ proptest! {
     /// (That it never re-hits the sphere when pointing outward needs an
     /// origin offset, which a later chapter adds; not tested here.)
     #[test]
-    fn case_5_chord_from_a_hit_point_has_length_2r_cos(
+    fn chord_from_a_hit_point_has_length_2r_cos(
         center in prop::array::uniform3(-10.0f32..10.0),
         radius in 0.5f32..5.0,
         eye_direction in prop::array::uniform3(-1.0f32..1.0),
@@ -316,7 +316,7 @@ fn finite_triangle_hit(hit: Option<(f32, f32, f32)>) -> bool {
 }
 
 #[test]
-fn case_6_parallel_and_almost_parallel_rays() {
+fn parallel_and_almost_parallel_rays() {
     // Exactly parallel: n·d = 0.
     let along = Ray::new(Vec3::new(0.3, 2.0, -0.7), Vec3::new(0.6, 0.0, 0.8));
     assert_eq!(
@@ -453,7 +453,7 @@ fn ray_through(p: Vec3, normal: Vec3, rng: &mut Rng) -> Ray {
 }
 
 #[test]
-fn case_7_shared_edges_have_no_cracks_unlike_moller_trumbore() {
+fn shared_edges_have_no_cracks_unlike_moller_trumbore() {
     // 20 seeded pairs, 1000 rays each through points spread along the shared
     // edge. Each ray passes through one triangle or the other (checked in
     // f64), so a ray that neither test hits is a crack. Möller–Trumbore
@@ -498,7 +498,7 @@ fn case_7_shared_edges_have_no_cracks_unlike_moller_trumbore() {
 }
 
 #[test]
-fn case_7_a_fan_has_no_hole_at_its_shared_vertex() {
+fn a_fan_has_no_hole_at_its_shared_vertex() {
     let mut rng = Rng(0xfa7);
     let (mut rays, mut naive_holes) = (0, 0);
     for _ in 0..10 {
@@ -537,7 +537,7 @@ fn case_7_a_fan_has_no_hole_at_its_shared_vertex() {
 }
 
 #[test]
-fn case_7_a_ray_along_an_edge_in_the_plane_hits_nothing() {
+fn a_ray_along_an_edge_in_the_plane_hits_nothing() {
     // The triangle lies in a coordinate plane, so a ray along an edge is
     // exactly in its plane (a tilted plane would round it slightly off).
     let corners = [
@@ -587,7 +587,7 @@ proptest! {
     /// The closest hit is no farther than any object's own hit, it is one of
     /// them, and there is none only when every object misses.
     #[test]
-    fn case_17_closest_hit_is_closest(
+    fn closest_hit_is_closest(
         shapes in prop::collection::vec(shape(), 1..12),
         origin in prop::array::uniform3(-15.0f32..15.0),
         direction in prop::array::uniform3(-1.0f32..1.0),

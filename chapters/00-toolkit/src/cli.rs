@@ -10,36 +10,46 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
+use crate::chapters::{self, ChapterEntry};
 use crate::scene::{Effect, Effects};
 use crate::{Image, Scene, SceneError, Stats};
 
-/// One chapter of the workbook.
+/// A chapter binary: which chapter it is, and its default scene.
+///
+/// Everything else about the chapter (folder, title, the effects it can
+/// simulate) comes from the list of chapters, `chapters/chapters.toml`.
 #[derive(Debug, Clone, Copy)]
 pub struct Chapter {
-    /// Its folder under `chapters/`, such as `02-hits`.
-    pub folder: &'static str,
-    /// What it teaches, in a few words.
-    pub title: &'static str,
-    /// Its default scene's path, for messages.
-    pub default_scene_path: &'static str,
-    /// Its default scene's text (built into the binary).
+    /// Its package, such as `ch02-hits`: `env!("CARGO_PKG_NAME")`.
+    pub package: &'static str,
+    /// Its default scene's text, `scenes/default.toml` (built into the binary).
     pub default_scene: &'static str,
-    /// The effects its tracer can simulate.
-    pub effects: Effects,
 }
 
 impl Chapter {
+    /// Its entry in `chapters/chapters.toml`.
+    pub fn entry(&self) -> &'static ChapterEntry {
+        chapters::find(self.package)
+            .unwrap_or_else(|| panic!("{} is not in chapters/chapters.toml", self.package))
+    }
+
+    /// The effects its tracer can simulate.
+    pub fn effects(&self) -> Effects {
+        self.entry().effects()
+    }
+
     /// Parses the chapter's default scene.
     pub fn default_scene(&self) -> Result<Scene, SceneError> {
-        Scene::parse(self.default_scene, self.default_scene_path)
+        Scene::parse(self.default_scene, &self.entry().default_scene_path())
     }
 }
 
 /// Arguments every chapter binary takes.
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct RenderArgs {
-    /// Scene file to render (TOML, see the chapter's scenes/ folder).
-    /// Without it, the chapter's default scene.
+    /// Scene file to render: TOML (see the chapter's scenes/ folder), or
+    /// NFF (the SPD scenes' format) if its name ends in .nff. Without it,
+    /// the chapter's default scene.
     pub scene: Option<PathBuf>,
 
     /// Where to write the PNG. Default: <chapter>.png in the current
@@ -48,11 +58,11 @@ pub struct RenderArgs {
     pub output: Option<PathBuf>,
 
     /// Image width in pixels, instead of the scene's [image] width.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=crate::scene::MAX_IMAGE_SIDE as i64))]
     pub width: Option<u32>,
 
     /// Image height in pixels, instead of the scene's [image] height.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=crate::scene::MAX_IMAGE_SIDE as i64))]
     pub height: Option<u32>,
 
     /// Rays per pixel, instead of the scene's [image] samples: a square
@@ -80,13 +90,17 @@ pub struct RenderArgs {
 }
 
 impl RenderArgs {
-    /// The scene to render, with the size overrides applied, and a name for it.
+    /// The scene to render and a name for it: the scene file (TOML, or NFF
+    /// when its name ends in `.nff`) or else the chapter's default scene,
+    /// with the size and sample overrides applied.
     pub fn load_scene(&self, chapter: &Chapter) -> Result<(Scene, String), SceneError> {
+        use crate::scene::nff;
         let (scene, name) = match &self.scene {
+            Some(path) if nff::is_nff(path) => (nff::load(path)?, path.display().to_string()),
             Some(path) => (Scene::load(path)?, path.display().to_string()),
             None => (
                 chapter.default_scene()?,
-                chapter.default_scene_path.to_owned(),
+                chapter.entry().default_scene_path(),
             ),
         };
         let width = self.width.unwrap_or(scene.image.width);
@@ -105,7 +119,7 @@ impl RenderArgs {
             Some(path) => path
                 .file_stem()
                 .map_or("render".into(), |s| s.to_string_lossy().into_owned()),
-            None => chapter.folder.to_owned(),
+            None => chapter.entry().folder.clone(),
         };
         PathBuf::from(format!("{stem}.png"))
     }
@@ -132,15 +146,15 @@ impl EffectPlan {
         EffectPlan {
             calls_for,
             switched_on,
-            simulated: wanted.and(chapter.effects),
-            later: wanted.minus(chapter.effects),
+            simulated: wanted.and(chapter.effects()),
+            later: wanted.minus(chapter.effects()),
         }
     }
 
     /// The scene to render: the effects the chapter knows but that are
     /// switched off are taken out of it, so nothing is computed for them.
     pub fn apply(&self, chapter: &Chapter, scene: Scene) -> Scene {
-        scene.without(chapter.effects.minus(self.switched_on))
+        scene.without(chapter.effects().minus(self.switched_on))
     }
 
     /// One line for each effect called for but left to a later chapter.
@@ -148,8 +162,12 @@ impl EffectPlan {
         self.later
             .iter()
             .map(|effect| {
-                let (number, folder) = effect.chapter();
-                format!("this scene calls for {effect}, introduced in chapter {number} ({folder})")
+                let chapter = chapters::introducing(effect);
+                format!(
+                    "this scene calls for {effect}, introduced in chapter {} ({})",
+                    chapter.number(),
+                    chapter.path().display()
+                )
             })
             .collect()
     }
@@ -209,6 +227,7 @@ pub fn run(
     args: &RenderArgs,
     render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
 ) -> ExitCode {
+    end_quietly_when_output_closes();
     run_loaded(chapter, args, args.load_scene(chapter), render)
 }
 
@@ -293,12 +312,29 @@ pub fn with_threads<T: Send>(
 pub fn report(chapter: &Chapter, scene: &str, out: &std::path::Path, r: &Rendered) {
     println!(
         "chapter {} ({}): rendered {scene}\nwrote {} ({}×{} pixels) in {:.3} s\n{}",
-        chapter.folder,
-        chapter.title,
+        chapter.entry().folder,
+        chapter.entry().title,
         out.display(),
         r.image.width,
         r.image.height,
         r.seconds.as_secs_f64(),
         r.stats
     );
+}
+
+/// Lets the process end quietly when whoever reads its output goes away, as
+/// `raybook render … | head -1` does after one line.
+///
+/// A Rust program ignores the signal (SIGPIPE) that ends other command-line
+/// tools then, so its next `println!` would panic ("failed printing to
+/// stdout: Broken pipe"). Restoring the signal's default action makes the
+/// process end silently instead, like `cat` or `grep`. Every binary calls
+/// this first (chapter binaries through [`run`]).
+pub fn end_quietly_when_output_closes() {
+    #[cfg(unix)]
+    // SAFETY: signal() only sets the process's action for SIGPIPE back to
+    // the default; no handler of ours runs.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
 }

@@ -1,5 +1,6 @@
 #![doc = include_str!("../README.md")]
 
+pub mod chapters;
 pub mod cli;
 pub mod compare;
 pub mod image;

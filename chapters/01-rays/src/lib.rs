@@ -165,11 +165,8 @@ pub fn render_sky(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
     render(scene, |ray, _| sky(ray), on_row)
 }
 
-/// This chapter, for the command line.
+/// This chapter, for the command line (the rest is in chapters/chapters.toml).
 pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
-    folder: "01-rays",
-    title: "rays and a pinhole camera",
-    default_scene_path: "chapters/01-rays/scenes/default.toml",
+    package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
-    effects: toolkit::scene::Effects::NONE,
 };

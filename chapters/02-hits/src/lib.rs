@@ -146,11 +146,8 @@ pub fn render_hits(scene: &Scene, view: View, on_row: impl Fn() + Sync) -> (Imag
     render(scene, |ray, _| shade(scene, view, ray), on_row)
 }
 
-/// This chapter, for the command line.
+/// This chapter, for the command line (the rest is in chapters/chapters.toml).
 pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
-    folder: "02-hits",
-    title: "ray-plane, ray-sphere and ray-triangle intersection",
-    default_scene_path: "chapters/02-hits/scenes/default.toml",
+    package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
-    effects: toolkit::scene::Effects::NONE,
 };

@@ -73,7 +73,7 @@ pub fn direct_light(
     for light in &scene.lights {
         match arrival(light, surface.hit.point) {
             Arrival::Ambient(ambient) => color += surface.material.color * ambient,
-            Arrival::From(incoming) => {
+            Arrival::Incoming(incoming) => {
                 if surface.normal.dot(incoming.direction) <= 0.0 {
                     continue; // behind the surface
                 }
@@ -112,13 +112,8 @@ pub fn render_lambert(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats)
     render(scene, |ray, _| trace(scene, ray), on_row)
 }
 
-/// This chapter, for the command line.
+/// This chapter, for the command line (the rest is in chapters/chapters.toml).
 pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
-    folder: "03-lambert",
-    title: "Lambert shading with ambient, point and spot lights",
-    default_scene_path: "chapters/03-lambert/scenes/default.toml",
+    package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
-    effects: toolkit::scene::Effects::NONE
-        .with(toolkit::scene::Effect::Lambert)
-        .with(toolkit::scene::Effect::Spot),
 };

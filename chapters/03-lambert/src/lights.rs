@@ -22,7 +22,7 @@ pub enum Arrival {
     /// Ambient light: the same everywhere, from no direction.
     Ambient(Color),
     /// Light from one direction.
-    From(Incoming),
+    Incoming(Incoming),
     /// Nothing: outside a spot's cone, or the light sits exactly on the point.
     Dark,
 }
@@ -57,7 +57,7 @@ pub fn arrival(light: &Light, point: Vec3) -> Arrival {
             outer_degrees,
             shadows,
         } => {
-            let Arrival::From(mut incoming) =
+            let Arrival::Incoming(mut incoming) =
                 from_point(position, color * intensity, shadows, point)
             else {
                 return Arrival::Dark;
@@ -67,7 +67,7 @@ pub fn arrival(light: &Light, point: Vec3) -> Arrival {
                 return Arrival::Dark;
             }
             incoming.radiance *= cone;
-            Arrival::From(incoming)
+            Arrival::Incoming(incoming)
         }
     }
 }
@@ -79,7 +79,7 @@ fn from_point(position: Vec3, power: Color, casts_shadows: bool, point: Vec3) ->
     if distance == 0.0 {
         return Arrival::Dark; // a light exactly on the point has no direction
     }
-    Arrival::From(Incoming {
+    Arrival::Incoming(Incoming {
         direction: to_light / distance,
         distance,
         radiance: power / (distance * distance),

@@ -2,16 +2,16 @@
 
 use std::process::Command;
 
+/// Runs the chapter binary with its picture written into a folder of the
+/// test's own (the tests run side by side).
 fn run(args: &[&str]) -> std::process::Output {
-    let out = std::env::temp_dir().join(format!("ch03-cli-{}.png", std::process::id()));
-    let output = Command::new(env!("CARGO_BIN_EXE_ch03-lambert"))
+    let dir = tempfile::tempdir().unwrap();
+    Command::new(env!("CARGO_BIN_EXE_ch03-lambert"))
         .args(args)
         .args(["--width", "16", "--height", "12", "-q", "-o"])
-        .arg(&out)
+        .arg(dir.path().join("out.png"))
         .output()
-        .unwrap();
-    let _ = std::fs::remove_file(out);
-    output
+        .unwrap()
 }
 
 const GLASS: &str = concat!(
@@ -44,10 +44,10 @@ fn strict_makes_it_an_error() {
 
 #[test]
 fn a_bad_scene_fails_with_file_and_line() {
-    let bad = std::env::temp_dir().join(format!("ch03-bad-{}.toml", std::process::id()));
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("bad.toml");
     std::fs::write(&bad, "[camera]\neye = [0, 0]\n").unwrap();
     let output = run(&[bad.to_str().unwrap()]);
-    let _ = std::fs::remove_file(&bad);
     assert!(!output.status.success());
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(

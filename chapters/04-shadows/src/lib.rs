@@ -1,6 +1,5 @@
 #![doc = include_str!("../README.md")]
 
-pub mod forward;
 mod offset;
 
 pub use ch03_lambert::{
@@ -14,7 +13,7 @@ use toolkit::{Color, Image, Scene, Stats};
 
 /// Where shadow rays start.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Origin {
+pub enum ShadowStart {
     /// Just off the surface, by [`offset_origin`]: no acne.
     #[default]
     Offset,
@@ -24,12 +23,12 @@ pub enum Origin {
 
 /// The shadow ray from a surface towards a light, and the distance to the
 /// light along it: anything hit before that distance blocks the light.
-pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: Origin) -> (Ray, f32) {
+pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -> (Ray, f32) {
     let point = surface.hit.point;
     let light = point + incoming.direction * incoming.distance;
     let start = match origin {
-        Origin::Offset => offset_origin(&surface.hit, incoming.direction),
-        Origin::HitPoint => point,
+        ShadowStart::Offset => offset_origin(&surface.hit, incoming.direction),
+        ShadowStart::HitPoint => point,
     };
     let ray = Ray {
         origin: start,
@@ -75,7 +74,7 @@ pub fn light_is_free(
     world: &(impl World + ?Sized),
     surface: &Surface,
     incoming: &Incoming,
-    origin: Origin,
+    origin: ShadowStart,
     stats: &mut Stats,
 ) -> bool {
     // EXERCISE(ch04-light-is-free): free if the light casts no shadows; else count stats.shadow, build shadow_ray(...) and ask world.any_hit up to the light's distance
@@ -95,7 +94,7 @@ pub fn shade(
     scene: &Scene,
     world: &(impl World + ?Sized),
     surface: &Surface,
-    origin: Origin,
+    origin: ShadowStart,
     stats: &mut Stats,
     reflect: impl Fn(&Incoming) -> Color,
 ) -> Color {
@@ -107,7 +106,7 @@ pub fn shade(
 
 /// The colour seen along a ray: the background, or the closest hit lit by
 /// Lambert's law where its shadow rays are free.
-pub fn trace(scene: &Scene, ray: &Ray, origin: Origin, stats: &mut Stats) -> Color {
+pub fn trace(scene: &Scene, ray: &Ray, origin: ShadowStart, stats: &mut Stats) -> Color {
     match closest_hit(&scene.objects, ray, 0.0, f32::INFINITY) {
         None => scene.image.background,
         Some(hit) => {
@@ -125,17 +124,16 @@ pub fn trace(scene: &Scene, ray: &Ray, origin: Origin, stats: &mut Stats) -> Col
 }
 
 /// Chapter 4's picture.
-pub fn render_shadows(scene: &Scene, origin: Origin, on_row: impl Fn() + Sync) -> (Image, Stats) {
+pub fn render_shadows(
+    scene: &Scene,
+    origin: ShadowStart,
+    on_row: impl Fn() + Sync,
+) -> (Image, Stats) {
     render(scene, |ray, stats| trace(scene, ray, origin, stats), on_row)
 }
 
-/// This chapter, for the command line.
+/// This chapter, for the command line (the rest is in chapters/chapters.toml).
 pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
-    folder: "04-shadows",
-    title: "shadow rays",
-    default_scene_path: "chapters/04-shadows/scenes/default.toml",
+    package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
-    effects: ch03_lambert::CHAPTER
-        .effects
-        .with(toolkit::scene::Effect::Shadows),
 };

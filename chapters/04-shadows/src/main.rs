@@ -1,7 +1,7 @@
 //! Renders a scene with Lambert shading and shadow rays.
 
 use ch04_shadows::toolkit::cli::{RenderArgs, run};
-use ch04_shadows::{CHAPTER, Origin, render_shadows};
+use ch04_shadows::{CHAPTER, ShadowStart, render_shadows};
 use clap::Parser;
 
 /// Chapter 4: shadow rays. Before a light adds to a point, a ray from the
@@ -21,9 +21,9 @@ struct Args {
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
     let origin = if args.no_offset {
-        Origin::HitPoint
+        ShadowStart::HitPoint
     } else {
-        Origin::Offset
+        ShadowStart::Offset
     };
     run(&CHAPTER, &args.render, |scene, on_row| {
         render_shadows(scene, origin, on_row)

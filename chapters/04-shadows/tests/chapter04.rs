@@ -3,9 +3,9 @@
 use ch04_shadows::toolkit::scene::{Light, Object, Shape};
 use ch04_shadows::toolkit::snapshot::assert_image;
 use ch04_shadows::toolkit::{Image, Scene, Vec3};
-use ch04_shadows::{CHAPTER, Origin, Ray, any_hit, offset_origin, render_shadows};
+use ch04_shadows::{CHAPTER, Ray, ShadowStart, any_hit, offset_origin, render_shadows};
 
-fn render(scene: &Scene, origin: Origin) -> Image {
+fn render(scene: &Scene, origin: ShadowStart) -> Image {
     render_shadows(scene, origin, || {}).0
 }
 
@@ -16,7 +16,7 @@ fn unshadowed(scene: &Scene) -> Image {
 
 /// Pixels darker with shadow rays than without: in a scene where nothing
 /// can block anything, each one is acne.
-fn shadowed_pixels(scene: &Scene, origin: Origin) -> usize {
+fn shadowed_pixels(scene: &Scene, origin: ShadowStart) -> usize {
     let free = unshadowed(scene);
     let shadowed = render(scene, origin);
     let lit = free.pixels.iter().filter(|c| c.max_element() > 0.0).count();
@@ -95,29 +95,29 @@ fn far_sphere() -> Scene {
 
 #[test]
 fn no_acne_on_a_floor_lit_at_a_grazing_angle() {
-    assert_eq!(shadowed_pixels(&grazing_floor(), Origin::Offset), 0);
+    assert_eq!(shadowed_pixels(&grazing_floor(), ShadowStart::Offset), 0);
 }
 
 #[test]
 fn no_acne_on_the_same_floor_far_from_the_origin() {
     let far = grazing_floor().translated(Vec3::new(1e4, 0.0, 1e4));
-    assert_eq!(shadowed_pixels(&far, Origin::Offset), 0);
+    assert_eq!(shadowed_pixels(&far, ShadowStart::Offset), 0);
 }
 
 #[test]
 fn no_acne_on_a_sphere_far_from_the_origin() {
-    assert_eq!(shadowed_pixels(&far_sphere(), Origin::Offset), 0);
+    assert_eq!(shadowed_pixels(&far_sphere(), ShadowStart::Offset), 0);
 }
 
 #[test]
 fn without_the_offset_the_same_scenes_show_acne() {
     // The three tests above could fail: here is the failure they guard against.
-    let floor = shadowed_pixels(&grazing_floor(), Origin::HitPoint);
+    let floor = shadowed_pixels(&grazing_floor(), ShadowStart::HitPoint);
     let far_floor = shadowed_pixels(
         &grazing_floor().translated(Vec3::new(1e4, 0.0, 1e4)),
-        Origin::HitPoint,
+        ShadowStart::HitPoint,
     );
-    let sphere = shadowed_pixels(&far_sphere(), Origin::HitPoint);
+    let sphere = shadowed_pixels(&far_sphere(), ShadowStart::HitPoint);
     let pixels = 160 * 120;
     println!(
         "acne without offset: floor {floor}, far floor {far_floor}, far sphere {sphere} of {pixels}"
@@ -188,7 +188,7 @@ fn objects_that_opt_out_cast_no_shadow() {
     for object in &mut scene.objects {
         object.shadows = false;
     }
-    let (image, stats) = render_shadows(&scene, Origin::Offset, || {});
+    let (image, stats) = render_shadows(&scene, ShadowStart::Offset, || {});
     assert_eq!(image, unshadowed(&scene));
     assert!(stats.shadow > 0, "the lights still ask");
 }
@@ -201,7 +201,7 @@ fn lights_that_opt_out_trace_no_shadow_ray() {
             *shadows = false;
         }
     }
-    let (image, stats) = render_shadows(&scene, Origin::Offset, || {});
+    let (image, stats) = render_shadows(&scene, ShadowStart::Offset, || {});
     assert_eq!(stats.shadow, 0);
     assert_eq!(image, unshadowed(&scene));
 }
@@ -214,7 +214,7 @@ fn the_box_keeps_its_light_inside() {
     let Some(&Light::Ambient { color: ambient }) = scene.lights.first() else {
         panic!("the box scene starts with its ambient light")
     };
-    let image = render(&scene, Origin::Offset);
+    let image = render(&scene, ShadowStart::Offset);
     let camera = ch04_shadows::Camera::new(&scene.camera, 80, 60);
     for y in 0..60 {
         for x in 0..80 {
@@ -232,15 +232,19 @@ fn the_box_keeps_its_light_inside() {
     open.objects
         .retain(|o| !matches!(o.shape, Shape::Triangle { .. }));
     assert_ne!(
-        render(&open, Origin::Offset),
-        render(&scene, Origin::Offset)
+        render(&open, ShadowStart::Offset),
+        render(&scene, ShadowStart::Offset)
     );
 }
 
 #[test]
 fn snapshot_default() {
     let scene = CHAPTER.default_scene().unwrap().with_size(160, 120);
-    assert_image("04-shadows", "default", &render(&scene, Origin::Offset));
+    assert_image(
+        "04-shadows",
+        "default",
+        &render(&scene, ShadowStart::Offset),
+    );
 }
 
 #[test]
@@ -248,5 +252,5 @@ fn snapshot_box() {
     let scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/box.toml"))
         .unwrap()
         .with_size(160, 120);
-    assert_image("04-shadows", "box", &render(&scene, Origin::Offset));
+    assert_image("04-shadows", "box", &render(&scene, ShadowStart::Offset));
 }

@@ -3,7 +3,7 @@
 mod mirror;
 
 pub use ch04_shadows::{
-    Camera, Hit, Incoming, Origin, Ray, Surface, World, any_hit, closest_hit, lambert,
+    Camera, Hit, Incoming, Ray, ShadowStart, Surface, World, any_hit, closest_hit, lambert,
     offset_origin, render, shade, toolkit,
 };
 pub use mirror::{highlight, mirror_ray, reflect};
@@ -12,7 +12,7 @@ use toolkit::{Color, Image, Scene, Stats};
 
 /// Which kind of secondary ray.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
+pub enum SecondaryKind {
     Reflection,
     Refraction,
 }
@@ -22,7 +22,7 @@ pub enum Kind {
 pub struct Secondary {
     pub ray: Ray,
     pub weight: Color,
-    pub kind: Kind,
+    pub kind: SecondaryKind,
 }
 
 /// What a recursive (Whitted) tracer decides at each hit. This chapter
@@ -38,9 +38,14 @@ pub trait Whitted: Sync {
         surface: &Surface,
         stats: &mut Stats,
     ) -> Color {
-        shade(scene, world, surface, Origin::Offset, stats, |incoming| {
-            lambert(surface, incoming) + highlight(surface, incoming)
-        })
+        shade(
+            scene,
+            world,
+            surface,
+            ShadowStart::Offset,
+            stats,
+            |incoming| lambert(surface, incoming) + highlight(surface, incoming),
+        )
     }
 
     /// The rays that leave the surface (at most two: a mirror ray and a
@@ -136,8 +141,8 @@ fn follow_secondary_rays(
         };
         if tracer.may_trace(next.depth, next.weight, stats) {
             match secondary.kind {
-                Kind::Reflection => stats.reflection += 1,
-                Kind::Refraction => stats.refraction += 1,
+                SecondaryKind::Reflection => stats.reflection += 1,
+                SecondaryKind::Refraction => stats.refraction += 1,
             }
             let seen = trace(tracer, scene, world, &secondary.ray, next, stats);
             color += secondary.weight * seen;
@@ -169,13 +174,8 @@ pub fn render_mirrors(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats)
     render_whitted(&tracer, scene, &scene.objects[..], on_row)
 }
 
-/// This chapter, for the command line.
+/// This chapter, for the command line (the rest is in chapters/chapters.toml).
 pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
-    folder: "05-reflection",
-    title: "specular reflection",
-    default_scene_path: "chapters/05-reflection/scenes/default.toml",
+    package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
-    effects: ch04_shadows::CHAPTER
-        .effects
-        .with(toolkit::scene::Effect::Reflection),
 };

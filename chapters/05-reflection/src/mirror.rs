@@ -1,7 +1,7 @@
 //! Mirror reflection and the highlight of point lights.
 
 use crate::toolkit::{Color, Vec3};
-use crate::{Incoming, Kind, Ray, Secondary, Surface, offset_origin};
+use crate::{Incoming, Ray, Secondary, SecondaryKind, Surface, offset_origin};
 
 /// The mirror direction of `d` about the unit normal `n`:
 /// d_o = d_i − 2(d_i·n)n.
@@ -26,7 +26,7 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
     Some(Secondary {
         ray: Ray { origin, direction },
         weight,
-        kind: Kind::Reflection,
+        kind: SecondaryKind::Reflection,
     })
 }
 

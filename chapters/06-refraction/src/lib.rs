@@ -3,8 +3,9 @@
 mod snell;
 
 pub use ch05_reflection::{
-    Camera, Hit, Kind, Mirrors, Origin, Path, Ray, Secondary, Surface, Whitted, World, closest_hit,
-    lambert, mirror_ray, offset_origin, reflect, render, render_whitted, shade, toolkit, trace,
+    Camera, Hit, Mirrors, Path, Ray, Secondary, SecondaryKind, ShadowStart, Surface, Whitted,
+    World, closest_hit, lambert, mirror_ray, offset_origin, reflect, render, render_whitted, shade,
+    toolkit, trace,
 };
 pub use snell::{refract, schlick};
 
@@ -68,7 +69,7 @@ pub fn refracted_ray(surface: &Surface, direction: Vec3, weight: Color) -> Optio
     Some(Secondary {
         ray: Ray { origin, direction },
         weight,
-        kind: Kind::Refraction,
+        kind: SecondaryKind::Refraction,
     })
 }
 
@@ -106,13 +107,8 @@ pub fn render_glass(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
     render_whitted(&tracer, scene, &scene.objects[..], on_row)
 }
 
-/// This chapter, for the command line.
+/// This chapter, for the command line (the rest is in chapters/chapters.toml).
 pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
-    folder: "06-refraction",
-    title: "refraction by Snell's law",
-    default_scene_path: "chapters/06-refraction/scenes/default.toml",
+    package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
-    effects: ch05_reflection::CHAPTER
-        .effects
-        .with(toolkit::scene::Effect::Refraction),
 };

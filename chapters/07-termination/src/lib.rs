@@ -1,12 +1,11 @@
 #![doc = include_str!("../README.md")]
 
 pub use ch06_refraction::{
-    Camera, Glass, Hit, Kind, Mirrors, Path, Ray, Secondary, Surface, Whitted, World, closest_hit,
-    offset_origin, reflect, refract, render, render_whitted, schlick, toolkit, trace,
+    Camera, Glass, Hit, Mirrors, Path, Ray, Secondary, SecondaryKind, ShadowStart, Surface,
+    Whitted, World, closest_hit, lambert, offset_origin, reflect, refract, render, render_whitted,
+    schlick, shade, toolkit, trace,
 };
 
-use ch06_refraction::{Origin, lambert, shade};
-use toolkit::scene::Effect;
 use toolkit::{Color, Image, Scene, Stats};
 
 /// The lecture's three termination criteria. A path ends when
@@ -65,75 +64,17 @@ impl Whitted for Tracer {
     }
 }
 
-/// The complete tracer for a scene that calls for neither reflection nor
-/// refraction: each hit gets chapter 4's shadowed Lambert shading, and no
-/// secondary ray ever leaves it.
-///
-/// It is the same [`trace`] as [`Tracer`]'s, and makes the same picture. But
-/// its answers are fixed before rendering, so the compiler builds a `trace`
-/// without the recursion, the highlight and the secondary rays: machinery
-/// the scene does not call for costs nothing (`cargo bench --bench effects`).
-#[derive(Debug, Clone, Copy)]
-pub struct Direct;
-
-impl Whitted for Direct {
-    /// Lambert shading where shadow rays are free: no material is shiny
-    /// under a point or spot light, so there is no highlight to add.
-    fn local(
-        &self,
-        scene: &Scene,
-        world: &(impl World + ?Sized),
-        surface: &Surface,
-        stats: &mut Stats,
-    ) -> Color {
-        shade(scene, world, surface, Origin::Offset, stats, |incoming| {
-            lambert(surface, incoming)
-        })
-    }
-
-    /// None: no material reflects or transmits.
-    fn secondary_rays(&self, _: &Surface, _: &Ray) -> [Option<Secondary>; 2] {
-        [None, None]
-    }
-
-    /// Never asked: there are no secondary rays.
-    fn may_trace(&self, _: u32, _: Color, _: &mut Stats) -> bool {
-        false
-    }
-}
-
-/// Renders `scene` against `world` with the complete tracer, chosen once,
-/// before rendering, by the effects the scene calls for: [`Direct`] if it
-/// calls for neither reflection nor refraction, else [`Tracer`] with the
-/// given criteria. Both give the same picture and the same statistics.
-pub fn render_complete(
-    scene: &Scene,
-    world: &(impl World + ?Sized),
-    termination: Termination,
-    on_row: impl Fn() + Sync,
-) -> (Image, Stats) {
-    let effects = scene.calls_for();
-    if effects.contains(Effect::Reflection) || effects.contains(Effect::Refraction) {
-        render_whitted(&Tracer { termination }, scene, world, on_row)
-    } else {
-        render_whitted(&Direct, scene, world, on_row)
-    }
-}
-
 /// Chapter 7's picture, with the given criteria.
 pub fn render_terminated(
     scene: &Scene,
     termination: Termination,
     on_row: impl Fn() + Sync,
 ) -> (Image, Stats) {
-    render_complete(scene, &scene.objects[..], termination, on_row)
+    render_whitted(&Tracer { termination }, scene, &scene.objects[..], on_row)
 }
 
-/// This chapter, for the command line.
+/// This chapter, for the command line (the rest is in chapters/chapters.toml).
 pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
-    folder: "07-termination",
-    title: "termination criteria",
-    default_scene_path: "chapters/07-termination/scenes/default.toml",
+    package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
-    effects: ch06_refraction::CHAPTER.effects,
 };

@@ -6,8 +6,7 @@ mod build;
 pub use aabb::{Aabb, bounds};
 pub use ch02_hits::{hit_at, intersect};
 pub use ch07_termination::{
-    Camera, Hit, Ray, Termination, Tracer, World, closest_hit, render, render_complete,
-    render_whitted, toolkit,
+    Camera, Hit, Ray, Termination, Tracer, World, closest_hit, render, render_whitted, toolkit,
 };
 
 use build::{Item, Node};
@@ -280,14 +279,11 @@ pub fn render_bvh(
     on_row: impl Fn() + Sync,
 ) -> (Image, Stats) {
     let bvh = Bvh::build(&scene.objects);
-    render_complete(scene, &bvh, termination, on_row)
+    render_whitted(&Tracer { termination }, scene, &bvh, on_row)
 }
 
-/// This chapter, for the command line.
+/// This chapter, for the command line (the rest is in chapters/chapters.toml).
 pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
-    folder: "08-bvh",
-    title: "a bounding volume hierarchy",
-    default_scene_path: "chapters/08-bvh/scenes/default.toml",
+    package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
-    effects: ch07_termination::CHAPTER.effects,
 };

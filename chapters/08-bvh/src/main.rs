@@ -3,7 +3,7 @@
 use std::time::Instant;
 
 use ch08_bvh::toolkit::cli::{RenderArgs, run};
-use ch08_bvh::{Bvh, CHAPTER, Termination, render_complete};
+use ch08_bvh::{Bvh, CHAPTER, Termination, Tracer, render_whitted};
 use clap::Parser;
 
 /// Chapter 8 (bonus): a bounding volume hierarchy. The tracer is chapter
@@ -27,6 +27,7 @@ fn main() -> std::process::ExitCode {
             bvh.summary(),
             start.elapsed().as_secs_f64()
         );
-        render_complete(scene, &bvh, Termination::of(scene), on_row)
+        let termination = Termination::of(scene);
+        render_whitted(&Tracer { termination }, scene, &bvh, on_row)
     })
 }

@@ -6,7 +6,7 @@ use ch08_bvh::toolkit::cli::with_threads;
 use ch08_bvh::toolkit::scene::{Object, Shape};
 use ch08_bvh::toolkit::snapshot::{assert_image, workspace_root};
 use ch08_bvh::toolkit::{Image, Scene, Stats, Vec3};
-use ch08_bvh::{Bvh, CHAPTER, Ray, Termination, World, render_bvh, render_complete};
+use ch08_bvh::{Bvh, CHAPTER, Ray, Termination, Tracer, World, render_bvh, render_whitted};
 use proptest::prelude::*;
 
 /// Every chapter's scene files, the first chapter first.
@@ -28,9 +28,10 @@ fn chapter_scenes() -> Vec<PathBuf> {
     scenes
 }
 
-/// The complete tracer against `world`.
+/// Chapter 7's tracer against `world`.
 fn render_against(scene: &Scene, world: &(impl World + ?Sized)) -> (Image, Stats) {
-    render_complete(scene, world, Termination::of(scene), || {})
+    let termination = Termination::of(scene);
+    render_whitted(&Tracer { termination }, scene, world, || {})
 }
 
 #[test]
