@@ -11,21 +11,7 @@ use proptest::prelude::*;
 
 /// Every chapter's scene files, the first chapter first.
 fn chapter_scenes() -> Vec<PathBuf> {
-    let mut scenes = Vec::new();
-    for chapter in std::fs::read_dir(workspace_root().join("chapters")).unwrap() {
-        let dir = chapter.unwrap().path().join("scenes");
-        let Ok(files) = std::fs::read_dir(&dir) else {
-            continue;
-        };
-        for file in files {
-            let path = file.unwrap().path();
-            if path.extension().is_some_and(|e| e == "toml") {
-                scenes.push(path);
-            }
-        }
-    }
-    scenes.sort();
-    scenes
+    ch08_bvh::toolkit::chapters::scene_files(&workspace_root())
 }
 
 /// Chapter 7's tracer against `world`.
