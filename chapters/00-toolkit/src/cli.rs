@@ -231,9 +231,9 @@ pub fn run(
     run_loaded(chapter, args, args.load_scene(chapter), render)
 }
 
-/// [`run`] for a scene the caller has loaded (or failed to load), such as
-/// one read from another file format: `loaded` is the scene and its name.
-pub fn run_loaded(
+/// [`run`] once the scene is loaded (or failed to load): `loaded` is the
+/// scene and its name.
+fn run_loaded(
     chapter: &Chapter,
     args: &RenderArgs,
     loaded: Result<(Scene, String), SceneError>,
