@@ -4,28 +4,43 @@
 //! [`regions`]); a handout is the workspace with each region's body replaced
 //! by `todo!`, so that its tests fail until the student writes it.
 
+pub mod check;
 mod regions;
 mod workspace;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-pub use regions::{ALLOW_UNUSED, END, Region, START, hand_out, regions};
+use check::{Caught, Check};
+pub use regions::{ALLOW_UNUSED, END, Region, START, hand_out, regions, replace_bodies};
 pub use workspace::{
     Written, current_workspace, holds_exercises, workspace_files, workspace_regions, write_tree,
+    write_tree_with,
 };
 
 /// `raybook handout DIR`: writes the workbook with its exercises taken out.
 #[derive(clap::Args, Debug, Clone)]
+#[command(group = clap::ArgGroup::new("what").required(true))]
 pub struct HandoutArgs {
     /// Where to write the copy: a folder that does not exist yet, or an
     /// empty one.
-    pub dir: PathBuf,
+    #[arg(group = "what")]
+    pub dir: Option<PathBuf>,
+
+    /// The maintainers' check instead: write each classic mistake of the
+    /// chapters' mistakes.toml into its exercise, run the chapter's tests,
+    /// and show which mistakes the tests catch. Fails if one goes unnoticed.
+    #[arg(long, group = "what")]
+    pub check_mistakes: bool,
 }
 
 /// Runs `raybook handout`.
 pub fn main(args: &HandoutArgs) -> ExitCode {
-    match run(args) {
+    let result = match &args.dir {
+        Some(dir) if !args.check_mistakes => write_handout(dir),
+        _ => check_mistakes(),
+    };
+    match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");
@@ -34,9 +49,8 @@ pub fn main(args: &HandoutArgs) -> ExitCode {
     }
 }
 
-fn run(args: &HandoutArgs) -> Result<(), String> {
+fn write_handout(dir: &Path) -> Result<(), String> {
     let root = current_workspace()?;
-    let dir = &args.dir;
     if let Ok(mut entries) = std::fs::read_dir(dir)
         && entries.next().is_some()
     {
@@ -65,4 +79,37 @@ fn run(args: &HandoutArgs) -> Result<(), String> {
         dir.display()
     );
     Ok(())
+}
+
+/// Replays every recorded mistake and prints what the tests made of it.
+fn check_mistakes() -> Result<(), String> {
+    let root = current_workspace()?;
+    let check = Check::new(&root)?;
+    let mut missed = Vec::new();
+    let mut count = 0;
+    for (chapter, file) in check::mistakes_files(&root)? {
+        for mistake in &file.mistake {
+            count += 1;
+            let caught = check::replay(&check, chapter, mistake)?;
+            let verdict = match &caught {
+                Caught::Named => "caught, named".to_owned(),
+                Caught::Unnamed => format!("caught, but no test says {:?}", mistake.expect),
+                Caught::Missed => "MISSED: every test passes".to_owned(),
+                Caught::NoBuild(e) => format!("MISSED: does not compile: {e}"),
+            };
+            println!("{:<22} {:<44} {verdict}", mistake.exercise, mistake.what);
+            if !matches!(caught, Caught::Named) {
+                missed.push(format!("{}: {}", mistake.exercise, mistake.what));
+            }
+        }
+    }
+    println!(
+        "{} of {count} mistakes caught and named",
+        count - missed.len()
+    );
+    if missed.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("not caught and named: {}", missed.join("; ")))
+    }
 }

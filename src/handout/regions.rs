@@ -172,8 +172,20 @@ fn is_exercise_id(id: &str) -> bool {
 /// and [`ALLOW_UNUSED`] on top if any was. Unselected regions are kept as
 /// they are. Returns the source unchanged if nothing was selected.
 pub fn hand_out(source: &str, select: impl Fn(&Region) -> bool) -> Result<String, String> {
+    replace_bodies(source, |r| select(r).then(|| r.todo_line()))
+}
+
+/// The source with the bodies of some regions replaced: `body(region)` is
+/// the new body (whole lines, indented as in the source) or None to keep it.
+/// A file with a replaced body gets [`ALLOW_UNUSED`] on top; one with none
+/// is returned unchanged.
+pub fn replace_bodies(
+    source: &str,
+    body: impl Fn(&Region) -> Option<String>,
+) -> Result<String, String> {
     let regions = regions(source)?;
-    let chosen: Vec<&Region> = regions.iter().filter(|r| select(r)).collect();
+    let chosen: Vec<(&Region, String)> =
+        regions.iter().filter_map(|r| Some((r, body(r)?))).collect();
     if chosen.is_empty() {
         return Ok(source.to_owned());
     }
@@ -184,12 +196,12 @@ pub fn hand_out(source: &str, select: impl Fn(&Region) -> bool) -> Result<String
         out.push('\n');
     }
     let mut next = 0;
-    for region in chosen {
+    for (region, body) in chosen {
         for line in &lines[next..=region.start] {
             out.push_str(line);
             out.push('\n');
         }
-        out.push_str(&region.todo_line());
+        out.push_str(body.trim_end_matches('\n'));
         out.push('\n');
         next = region.end;
     }
@@ -249,6 +261,15 @@ pub fn other() -> u32 {
         assert_eq!(hand_out(&out, |r| r.id == "ch03-lambert").unwrap(), out);
         // Nothing selected, nothing changed.
         assert_eq!(hand_out(SOURCE, |_| false).unwrap(), SOURCE);
+    }
+
+    #[test]
+    fn a_body_can_be_replaced_by_any_lines() {
+        let out = replace_bodies(SOURCE, |r| (r.id == "ch03-other").then(|| "    2\n".into()));
+        let out = out.unwrap();
+        assert!(out.contains("    // EXERCISE(ch03-other): one\n    2\n    // END EXERCISE\n"));
+        assert!(out.contains("    a * c\n"), "the other region is kept");
+        assert_eq!(regions(&out).unwrap().len(), 2);
     }
 
     #[test]

@@ -3,7 +3,7 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use super::regions::{Region, hand_out, regions};
+use super::regions::{Region, regions, replace_bodies};
 
 /// The workspace that holds the current folder, or an error saying so.
 pub fn current_workspace() -> Result<PathBuf, String> {
@@ -68,7 +68,7 @@ pub struct Written {
 }
 
 /// Copies the workspace at `root` into `dir`, with the selected exercise
-/// regions of every `.rs` file taken out (see [`hand_out`]).
+/// regions of every `.rs` file taken out (see [`super::hand_out`]).
 ///
 /// A file already in `dir` with the same content is left alone, so that
 /// cargo sees it unchanged and does not rebuild it: writing variants of a
@@ -78,53 +78,90 @@ pub fn write_tree(
     dir: &Path,
     select: impl Fn(&Region) -> bool,
 ) -> Result<Written, String> {
+    write_tree_with(root, dir, |r| select(r).then(|| r.todo_line()))
+}
+
+/// [`write_tree`] with each region's new body given by `body` (see
+/// [`replace_bodies`]): None keeps the reference's.
+pub fn write_tree_with(
+    root: &Path,
+    dir: &Path,
+    body: impl Fn(&Region) -> Option<String>,
+) -> Result<Written, String> {
     let mut written = Written::default();
     let mut ids = BTreeSet::new();
     for file in workspace_files(root)? {
         let from = root.join(&file);
         let bytes = std::fs::read(&from).map_err(|e| format!("{}: {e}", from.display()))?;
         let bytes = if holds_exercises(&file) {
-            let source = String::from_utf8(bytes)
-                .map_err(|e| format!("{}: not UTF-8: {e}", file.display()))?;
-            let found = regions(&source).map_err(|e| format!("{}: {e}", file.display()))?;
-            for region in &found {
-                if !ids.insert(region.id.clone()) {
-                    return Err(format!(
-                        "{}:{}: exercise id {} is used twice",
-                        file.display(),
-                        region.start + 1,
-                        region.id
-                    ));
-                }
-            }
-            let out = hand_out(&source, &select).map_err(|e| format!("{}: {e}", file.display()))?;
-            let after = if out == source {
-                Vec::new()
-            } else {
-                regions(&out).map_err(|e| format!("{}: {e}", file.display()))?
-            };
-            for region in after.into_iter().filter(|r| select(r)) {
-                written
-                    .regions
-                    .push((file.clone(), region.start + 1, region));
-            }
-            out.into_bytes()
+            let (out, replaced) = replace_in_file(&file, bytes, &mut ids, &body)?;
+            written.regions.extend(replaced);
+            out
         } else {
             bytes
         };
-        let to = dir.join(&file);
         written.files += 1;
-        if std::fs::read(&to).ok().as_deref() != Some(&bytes[..]) {
-            if let Some(parent) = to.parent() {
-                std::fs::create_dir_all(parent)
-                    .map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
-            }
-            std::fs::write(&to, &bytes)
-                .map_err(|e| format!("cannot write {}: {e}", to.display()))?;
+        if write_if_changed(&dir.join(&file), &bytes)? {
             written.changed += 1;
         }
     }
     Ok(written)
+}
+
+/// A region with its file (relative to the root) and the line of its
+/// opening marker (from 1).
+pub type Located = (PathBuf, usize, Region);
+
+/// A chapter source with its regions' bodies replaced, and the replaced
+/// regions as they stand in the new text. Checks that ids are unique.
+fn replace_in_file(
+    file: &Path,
+    bytes: Vec<u8>,
+    ids: &mut BTreeSet<String>,
+    body: &impl Fn(&Region) -> Option<String>,
+) -> Result<(Vec<u8>, Vec<Located>), String> {
+    let source =
+        String::from_utf8(bytes).map_err(|e| format!("{}: not UTF-8: {e}", file.display()))?;
+    let found = regions(&source).map_err(|e| format!("{}: {e}", file.display()))?;
+    let mut chosen = BTreeSet::new();
+    for region in &found {
+        if !ids.insert(region.id.clone()) {
+            return Err(format!(
+                "{}:{}: exercise id {} is used twice",
+                file.display(),
+                region.start + 1,
+                region.id
+            ));
+        }
+        if body(region).is_some() {
+            chosen.insert(region.id.clone());
+        }
+    }
+    let out = replace_bodies(&source, body).map_err(|e| format!("{}: {e}", file.display()))?;
+    let replaced = if chosen.is_empty() {
+        Vec::new()
+    } else {
+        let after = regions(&out).map_err(|e| format!("{}: {e}", file.display()))?;
+        after
+            .into_iter()
+            .filter(|r| chosen.contains(&r.id))
+            .map(|r| (file.to_owned(), r.start + 1, r))
+            .collect()
+    };
+    Ok((out.into_bytes(), replaced))
+}
+
+/// Writes `bytes` to `to` unless it holds them already; true if it wrote.
+fn write_if_changed(to: &Path, bytes: &[u8]) -> Result<bool, String> {
+    if std::fs::read(to).ok().as_deref() == Some(bytes) {
+        return Ok(false);
+    }
+    if let Some(parent) = to.parent() {
+        std::fs::create_dir_all(parent)
+            .map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
+    }
+    std::fs::write(to, bytes).map_err(|e| format!("cannot write {}: {e}", to.display()))?;
+    Ok(true)
 }
 
 /// Every exercise region of the workspace's chapters, with its file
