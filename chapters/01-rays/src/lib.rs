@@ -27,7 +27,7 @@ impl Ray {
 
     /// The point r(t) = r0 + t·rd.
     pub fn at(&self, t: f32) -> Vec3 {
-        // EXERCISE(ch01-at): return the point r0 + t·rd (origin plus t times direction)
+        // EXERCISE(ch01-at): the point of the ray at distance t from its origin
         self.origin + t * self.direction
         // END EXERCISE
     }
@@ -51,12 +51,22 @@ pub struct Camera {
 }
 
 impl Camera {
-    /// The camera of a scene for an image of `width` × `height` pixels.
+    /// The camera of a scene for an image of `width` × `height` pixels: its
+    /// frame and the size of its image plane (the README derives both).
     ///
-    /// forward = normalise(look_at − eye), right = normalise(forward × up),
-    /// up' = right × forward. The vertical field of view gives the plane's
-    /// half height tan(vfov / 2); the aspect ratio gives its half width.
+    /// * forward = normalise(look_at − eye): from the eye to the centre of
+    ///   the picture.
+    /// * right = normalise(forward × up₀), with up₀ the scene's up: at right
+    ///   angles to both, and to the viewer's right (x right, y up, looking
+    ///   down −z is a right-handed frame, and (−z) × y = x).
+    /// * up = right × forward: the scene's up made perpendicular to forward
+    ///   (it is only a hint when the camera looks up or down), of length 1
+    ///   because right and forward are unit vectors at right angles.
+    /// * half_height = tan(vfov / 2): the ray to the top edge makes half the
+    ///   vertical field of view with forward, on a plane at distance 1.
+    /// * half_width = half_height · width / height, so pixels are square.
     pub fn new(spec: &CameraSpec, width: u32, height: u32) -> Camera {
+        // EXERCISE(ch01-frame): the camera's unit frame (forward towards look_at, right to the viewer's right, up at right angles to both) and the image plane's half width and half height at distance 1, from the vertical field of view and the aspect ratio
         let forward = (spec.look_at - spec.eye).normalize();
         let right = forward.cross(spec.up).normalize();
         let up = right.cross(forward);
@@ -72,6 +82,7 @@ impl Camera {
             width,
             height,
         }
+        // END EXERCISE
     }
 
     /// The ray through image position (px, py), measured in pixels from the
@@ -79,10 +90,10 @@ impl Camera {
     /// (x + 0.5, y + 0.5)). It is cast backwards: from the eye into the
     /// scene, the opposite way to the light that makes the picture.
     pub fn ray_through(&self, px: f32, py: f32) -> Ray {
-        // EXERCISE(ch01-ray-through): map (px, py) to s in [-half_width, half_width] and t in [-half_height, half_height] (y down), then Ray::new(eye, forward + s·right + t·up)
-        let s = (2.0 * px / self.width as f32 - 1.0) * self.half_width;
-        let t = (1.0 - 2.0 * py / self.height as f32) * self.half_height;
-        Ray::new(self.eye, self.forward + s * self.right + t * self.up)
+        // EXERCISE(ch01-ray-through): the ray from the eye through the point of the image plane at pixel position (px, py), the image's top-left corner being (0, 0) and its bottom-right (width, height)
+        let u = (2.0 * px / self.width as f32 - 1.0) * self.half_width;
+        let v = (1.0 - 2.0 * py / self.height as f32) * self.half_height;
+        Ray::new(self.eye, self.forward + u * self.right + v * self.up)
         // END EXERCISE
     }
 

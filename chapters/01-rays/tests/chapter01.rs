@@ -1,5 +1,6 @@
 //! Chapter 1: the ray equation, the pinhole camera and its picture.
 
+use ch01_rays::toolkit::scene::CameraSpec;
 use ch01_rays::toolkit::snapshot::assert_image;
 use ch01_rays::toolkit::{Scene, Vec3};
 use ch01_rays::{CHAPTER, Camera, Ray, render_sky};
@@ -12,18 +13,186 @@ fn scene() -> Scene {
 fn a_ray_walks_t_units_along_its_unit_direction() {
     let ray = Ray::new(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.0, 0.0, -10.0));
     assert_eq!(ray.direction, Vec3::new(0.0, 0.0, -1.0));
-    assert_eq!(ray.at(0.0), Vec3::new(1.0, 2.0, 3.0));
-    assert_eq!(ray.at(2.5), Vec3::new(1.0, 2.0, 0.5));
+    assert_eq!(ray.at(0.0), Vec3::new(1.0, 2.0, 3.0), "r(0) is the origin");
+    assert_eq!(
+        ray.at(2.5),
+        Vec3::new(1.0, 2.0, 0.5),
+        "r(2.5) lies 2.5 units from the origin along the direction"
+    );
+    assert_eq!(
+        ray.at(-1.0),
+        Vec3::new(1.0, 2.0, 4.0),
+        "r(−1) lies behind the origin"
+    );
+}
+
+/// A camera that looks down at 40° with an awkward eye, as a camera over a
+/// table would: the scene's up is then far from perpendicular to forward.
+fn tilted() -> CameraSpec {
+    CameraSpec {
+        eye: Vec3::new(0.7, 4.0, 3.1),
+        look_at: Vec3::new(0.7, 4.0 - 3.0 * 40f32.to_radians().tan(), 0.1),
+        up: Vec3::Y,
+        vfov_degrees: 50.0,
+    }
+}
+
+#[test]
+fn the_frame_is_orthonormal_right_handed_and_upright() {
+    for spec in [scene().camera, tilted()] {
+        let c = Camera::new(&spec, 320, 240);
+        for (name, v) in [("forward", c.forward), ("right", c.right), ("up", c.up)] {
+            assert!(
+                (v.length() - 1.0).abs() < 1e-6,
+                "{name} {v} has length {}, not 1: normalise it \
+                 (look_at − eye is as long as the distance, forward × up₀ as the sine of their angle)",
+                v.length()
+            );
+        }
+        let forward = (spec.look_at - spec.eye).normalize();
+        assert!(
+            (c.forward - forward).length() < 1e-6,
+            "forward {} must point from the eye towards look_at, {forward}",
+            c.forward
+        );
+        assert!(
+            c.up.dot(c.forward).abs() < 1e-6,
+            "up {} is not at right angles to forward {}: the scene's up is only a hint \
+             when the camera looks up or down; make up perpendicular to forward and right",
+            c.up,
+            c.forward
+        );
+        assert!(
+            c.right.dot(c.forward).abs() < 1e-6,
+            "right is not ⊥ forward"
+        );
+        assert!(c.right.dot(c.up).abs() < 1e-6, "right is not ⊥ up");
+        assert!(
+            c.up.dot(spec.up) > 0.0,
+            "up {} points away from the scene's up {}: the picture is upside down \
+             (turned by 180° if right points left too): check the order of the cross products",
+            c.up,
+            spec.up
+        );
+        assert!(
+            (c.right.cross(c.up) + c.forward).length() < 1e-5,
+            "right {} and up {} make a mirrored picture: right × up must be −forward, \
+             as x × y = z is for a camera looking down −z (the viewer's right is forward × up₀, \
+             not up₀ × forward)",
+            c.right,
+            c.up
+        );
+    }
+    // Looking down −z with y up, the viewer's right is +x.
+    let c = Camera::new(&scene().camera, 320, 240);
+    assert!(
+        c.right.x > 0.99,
+        "right = {}: looking down −z with y up, the viewer's right is +x (a mirrored picture?)",
+        c.right
+    );
+}
+
+#[test]
+fn the_image_plane_is_tan_half_the_field_of_view_high() {
+    for (spec, (width, height)) in [(scene().camera, (320, 240)), (tilted(), (300, 500))] {
+        let c = Camera::new(&spec, width, height);
+        let half = spec.vfov_degrees.to_radians() / 2.0;
+        let aspect = width as f32 / height as f32;
+        let close = |a: f32, b: f32| (a - b).abs() <= 1e-5 * b.abs();
+        let diagnosis = if close(c.half_height, half.tan()) {
+            ""
+        } else if close(c.half_height, (2.0 * half).tan()) {
+            ": that is tan(vfov), the whole field of view; the top edge is half of it above forward"
+        } else if close(c.half_height, half.tan() / aspect) {
+            ": vfov was taken as the horizontal field of view; it is the vertical one"
+        } else if close(c.half_height.abs(), (spec.vfov_degrees / 2.0).tan().abs()) {
+            ": the tangent was taken of degrees; convert vfov to radians"
+        } else {
+            ""
+        };
+        assert!(
+            close(c.half_height, half.tan()),
+            "vfov {}°: half_height is {}, expected tan(vfov / 2) = {}{diagnosis}",
+            spec.vfov_degrees,
+            c.half_height,
+            half.tan()
+        );
+        assert!(
+            close(c.half_width, c.half_height * aspect),
+            "{width}×{height} pixels: half_width is {}, expected half_height · width / height = {} \
+             (square pixels)",
+            c.half_width,
+            c.half_height * aspect
+        );
+    }
 }
 
 #[test]
 fn the_centre_of_the_image_looks_at_look_at() {
-    let s = scene();
-    let camera = Camera::new(&s.camera, 320, 240);
-    let ray = camera.ray_through(160.0, 120.0);
-    let towards = (s.camera.look_at - s.camera.eye).normalize();
-    assert!(ray.direction.dot(towards) > 1.0 - 1e-6, "{ray:?}");
-    assert_eq!(ray.origin, s.camera.eye, "every ray starts at the eye");
+    for spec in [scene().camera, tilted()] {
+        let camera = Camera::new(&spec, 320, 240);
+        let ray = camera.ray_through(160.0, 120.0);
+        let towards = (spec.look_at - spec.eye).normalize();
+        assert!(
+            ray.direction.dot(towards) > 1.0 - 1e-6,
+            "the ray through the image's centre (160, 120) goes along {}, not towards look_at {towards}",
+            ray.direction
+        );
+        assert_eq!(ray.origin, spec.eye, "every ray starts at the eye");
+    }
+}
+
+/// A camera built by hand, not by `Camera::new`: a frame turned away from
+/// the axes, and an image plane 0.5 high and 0.8 wide for 320 × 200 pixels.
+fn hand_made() -> Camera {
+    let forward = Vec3::new(0.6, 0.0, -0.8);
+    let up = Vec3::new(0.0, 1.0, 0.0);
+    Camera {
+        eye: Vec3::new(1.0, 2.0, 3.0),
+        right: forward.cross(up),
+        up,
+        forward,
+        half_width: 0.4,
+        half_height: 0.25,
+        width: 320,
+        height: 200,
+    }
+}
+
+#[test]
+fn the_image_corners_are_the_image_planes_corners() {
+    let camera = hand_made();
+    let (w, h) = (camera.half_width, camera.half_height);
+    let through = |across: f32, down: f32| {
+        (camera.forward + across * w * camera.right - down * h * camera.up).normalize()
+    };
+    for ((px, py), expected, name) in [
+        ((0.0, 0.0), through(-1.0, -1.0), "top-left corner"),
+        ((320.0, 0.0), through(1.0, -1.0), "top-right corner"),
+        ((0.0, 200.0), through(-1.0, 1.0), "bottom-left corner"),
+        ((320.0, 200.0), through(1.0, 1.0), "bottom-right corner"),
+        ((160.0, 100.0), through(0.0, 0.0), "centre"),
+        (
+            (80.0, 150.0),
+            through(-0.5, 0.5),
+            "point halfway to the bottom-left corner",
+        ),
+    ] {
+        let ray = camera.ray_through(px, py);
+        assert_eq!(ray.origin, camera.eye, "every ray starts at the eye");
+        let d = ray.direction;
+        assert!(
+            (d - expected).length() < 1e-5,
+            "ray_through({px}, {py}) goes along {d}, not through the image plane's {name} \
+             {expected}: positions are in pixels from the image's top-left corner (no half pixel \
+             added: primary_ray does that), x across the width, y down the height"
+        );
+    }
+    let centre = camera.primary_ray(0, 0).direction;
+    assert!(
+        (centre - through(-1.0 + 1.0 / 320.0, -1.0 + 1.0 / 200.0)).length() < 1e-5,
+        "primary_ray(0, 0) passes through the centre of the top-left pixel"
+    );
 }
 
 #[test]
@@ -33,7 +202,11 @@ fn the_top_and_bottom_edges_span_the_vertical_field_of_view() {
     let top = camera.ray_through(160.0, 0.0).direction;
     let bottom = camera.ray_through(160.0, 240.0).direction;
     let angle = top.angle_between(bottom).to_degrees();
-    assert!((angle - s.camera.vfov_degrees).abs() < 1e-3, "{angle}");
+    assert!(
+        (angle - s.camera.vfov_degrees).abs() < 1e-3,
+        "the rays through the top and bottom edges are {angle}° apart, not vfov = {}°",
+        s.camera.vfov_degrees
+    );
 }
 
 #[test]
@@ -61,9 +234,14 @@ fn image_x_grows_to_the_right_and_y_grows_down() {
     let bottom = camera.primary_ray(160, 239).direction;
     assert!(
         left.x < 0.0 && right.x > 0.0,
-        "the camera looks down −z with +x to the right"
+        "the camera looks down −z with +x to the right: pixel x = 0 is on the left \
+         (left {left}, right {right}; a mirrored picture?)"
     );
-    assert!(top.y > bottom.y);
+    assert!(
+        top.y > bottom.y,
+        "image y grows down: row 0 looks higher than the last row (top {top}, bottom {bottom}; \
+         an upside-down picture?)"
+    );
 }
 
 #[test]

@@ -6,9 +6,10 @@ mod triangle;
 
 pub use ch01_rays::{Camera, Ray, render, toolkit};
 pub use plane::{intersect_plane, plane_point};
-pub use sphere::{intersect_sphere, sphere_point, sphere_roots};
+pub use sphere::{intersect_sphere, sphere_point, sphere_roots, sphere_roots_abc};
 pub use triangle::{
-    barycentrics, intersect_triangle, smooth_normal, triangle_normal, triangle_point,
+    barycentrics, intersect_triangle, smooth_normal, triangle_by_plane, triangle_normal,
+    triangle_point,
 };
 
 use toolkit::scene::{Object, Shape};
@@ -22,8 +23,8 @@ pub struct Hit {
     /// The point hit.
     pub point: Vec3,
     /// The surface's geometric unit normal at the point, as the shape defines
-    /// it: outward for a sphere, n for a plane, (b − a) × (c − a) for a
-    /// triangle. It may face away from the ray; shading decides what to do.
+    /// it: outward for a sphere, n for a plane, along (p₁ − p₀) × (p₂ − p₀)
+    /// for a triangle (p₀, p₁, p₂). It may face away from the ray; shading decides what to do.
     /// Rays leaving the surface are offset along it.
     pub normal: Vec3,
     /// The unit normal that shading uses: the geometric `normal` for every
@@ -101,7 +102,7 @@ fn largest(p: Vec3) -> f32 {
 /// Each object is tested with the nearest hit so far as the upper bound, so
 /// an object behind it is rejected without more work.
 pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-    // EXERCISE(ch02-closest): intersect every object with the nearest t so far as t_max; return hit_at(...) of the nearest, or None
+    // EXERCISE(ch02-closest): the hit of the object met nearest along the ray within (t_min, t_max), as a Hit, or None if the ray meets none
     let mut closest: Option<(f32, usize)> = None;
     for (index, object) in objects.iter().enumerate() {
         let bound = closest.map_or(t_max, |(t, _)| t);

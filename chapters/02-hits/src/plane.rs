@@ -17,7 +17,7 @@ pub fn intersect_plane(
     t_min: f32,
     t_max: f32,
 ) -> Option<f32> {
-    // EXERCISE(ch02-plane): t = -(n·r0 + d) / (n·rd); no hit if n·rd = 0, t is not finite or t is outside (t_min, t_max)
+    // EXERCISE(ch02-plane): the distance t at which r(t) satisfies the plane's equation; None for a ray parallel to the plane or a t that is not finite or not strictly between t_min and t_max
     let denominator = normal.dot(ray.direction);
     if denominator == 0.0 {
         return None;

@@ -1,49 +1,81 @@
-//! Ray–sphere intersection with a numerically stable quadratic.
+//! Ray–sphere intersection: the lecture's quadratic, and its numerically
+//! stable form, which the tracer uses.
+//!
+//! Letters as in the README: the sphere has centre m and radius ρ; the ray is
+//! r(t) = r0 + t·rd; a, b, c are the quadratic's coefficients and nothing else.
 
 use crate::Ray;
 use crate::toolkit::Vec3;
 
 /// Both distances at which the ray's line meets the sphere, nearest first,
-/// or `None` if it passes by.
+/// or `None` if it passes by: the lecture's formula, in f32.
 ///
-/// A point x is on the sphere when |x − c|² = r². With x = r0 + t·rd this is
-/// the quadratic a·t² + 2b·t + c' = 0 with f = r0 − c, a = rd·rd (1 up to
-/// rounding), b = f·rd and c' = f·f − r², so t = (−b ± √(b² − a·c')) / a.
+/// A point x is on the sphere when |x − m|² = ρ². Put in x = r(t) and write
+/// f = r0 − m: (rd·rd)·t² + 2 (f·rd)·t + (f·f − ρ²) = 0, that is
+/// a·t² + b·t + c = 0 with
 ///
-/// Computed like that, both halves of the answer are lost to cancellation:
-/// * b² − a·c' subtracts two nearly equal large numbers when the sphere is far
-///   away and small (b² ≈ c' ≈ distance²). We use the same quantity in a form
-///   without that subtraction: b² − a·c' = a·(r² − |f − (b/a)·rd|²), where
-///   f − (b/a)·rd is the vector from the centre to the ray's closest point.
-/// * −b ± √… subtracts nearly equal numbers for one of the two signs. We
-///   compute the other root, t₁ = q/a with q = −b − sign(b)·√…, without
-///   cancellation and get the first from the product of the roots:
-///   t₀·t₁ = c'/a, so t₀ = c'/q.
+/// a = rd·rd, b = 2 f·rd, c = f·f − ρ²,
+///
+/// so t = (−b ± √Δ) / 2a with the discriminant Δ = b² − 4ac: no hit if
+/// Δ < 0, one touching point (a double root) if Δ = 0, two hits if Δ > 0.
+///
+/// Right on paper, and for a sphere near the eye; [`sphere_roots`] is the
+/// form that stays right for a small sphere far away.
+pub fn sphere_roots_abc(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> {
+    // EXERCISE(ch02-sphere): the lecture's quadratic a·t² + b·t + c = 0 for the ray's line and the sphere; None when the discriminant says the line passes by; both roots, nearest first (a tangent line has one double root)
+    let f = ray.origin - center;
+    let a = ray.direction.dot(ray.direction);
+    let b = 2.0 * f.dot(ray.direction);
+    let c = f.dot(f) - radius * radius;
+    let discriminant = b * b - 4.0 * a * c;
+    if discriminant < 0.0 {
+        return None;
+    }
+    let root = discriminant.sqrt();
+    Some(((-b - root) / (2.0 * a), (-b + root) / (2.0 * a)))
+    // END EXERCISE
+}
+
+/// Both distances at which the ray's line meets the sphere, nearest first,
+/// or `None` if it passes by: the same roots as [`sphere_roots_abc`], computed
+/// so that they stay right for a small sphere far away and for a huge sphere
+/// close by. The tracer uses this one.
+///
+/// With the lecture's a, b, c (f = r0 − m), each half of
+/// t = (−b ± √Δ) / 2a loses its digits to cancellation in f32:
+/// * Δ = b² − 4ac subtracts two nearly equal large numbers when the sphere is
+///   far away and small (b² ≈ 4ac ≈ 4·distance²). The same number, without
+///   that subtraction: Δ = 4a·(ρ² − |h|²), where h = f − (b / 2a)·rd goes from
+///   the centre to the point of the ray's line closest to it.
+/// * −b ± √Δ subtracts nearly equal numbers for one of the two signs. We
+///   compute the root without cancellation, t₁ = q/a with
+///   q = −(b + sign(b)·√Δ) / 2, and get the other from the product of the
+///   roots, t₀·t₁ = c/a: t₀ = c/q.
 ///
 /// (Haines, Günther and Akenine-Möller, "Precision Improvements for
 /// Ray/Sphere Intersection", Ray Tracing Gems, chapter 7.)
 ///
 /// The formula is evaluated in f64, because f32 cannot even hold the
 /// differences it starts from: 10⁴ units from the origin f32 steps by about
-/// 10⁻³, so r0 − c, b and c' would be off by a tenth of a sphere of radius
-/// 0.01, or of a gap of 0.01 between the ray's origin and a huge sphere. In
-/// f64 every f32 input and every product of two of them is exact, r0 − c
-/// nearly so, and the stable formula keeps that precision to the end.
+/// 10⁻³, so f, b and c would be off by a tenth of a sphere of radius 0.01,
+/// or of a gap of 0.01 between the ray's origin and a huge sphere. In f64
+/// every f32 input and every product of two of them is exact, f nearly so,
+/// and the stable formula keeps that precision to the end.
 pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> {
-    // EXERCISE(ch02-sphere): solve t² + 2bt + c' = 0 with f = r0 - c, b = f·rd, c' = f·f - r²; None if the discriminant is negative; both roots, nearest first
     let f = ray.origin.as_dvec3() - center.as_dvec3();
-    let d = ray.direction.as_dvec3();
-    let r = radius as f64;
-    let (a, b, c) = (d.dot(d), f.dot(d), f.dot(f) - r * r);
-    let closest = f - (b / a) * d;
-    let discriminant = a * (r * r - closest.dot(closest));
+    let rd = ray.direction.as_dvec3();
+    let rho = radius as f64;
+    let (a, b, c) = (rd.dot(rd), 2.0 * f.dot(rd), f.dot(f) - rho * rho);
+    let h = f - (b / (2.0 * a)) * rd;
+    let discriminant = 4.0 * a * (rho * rho - h.dot(h));
     if discriminant < 0.0 {
         return None;
     }
-    let q = -b - discriminant.sqrt().copysign(b);
+    // For b = 0 and Δ = 0 (a tangent line from a point on the sphere), q = 0
+    // and c/q is 0/0: min and max drop that NaN and keep the double root 0.
+    let q = -(b + discriminant.sqrt().copysign(b)) / 2.0;
     let (t0, t1) = ((c / q) as f32, (q / a) as f32);
     Some((t0.min(t1), t0.max(t1)))
-    // END EXERCISE
 }
 
 /// The nearest distance in (t_min, t_max) at which the ray hits the sphere.
@@ -55,13 +87,15 @@ pub fn intersect_sphere(
     t_max: f32,
 ) -> Option<f32> {
     let (near, far) = sphere_roots(center, radius, ray)?;
+    // EXERCISE(ch02-nearest): the nearest of the two roots that lies strictly between t_min and t_max, if either does
     [near, far].into_iter().find(|&t| t > t_min && t < t_max)
+    // END EXERCISE
 }
 
 /// The point of the sphere hit at distance t, put back onto the surface.
 ///
 /// r0 + t·rd carries the rounding error of t, which grows with the distance
-/// travelled; projecting it onto the sphere, c + r·(p − c)/|p − c|, leaves
+/// travelled; projecting it onto the sphere, m + ρ·(x − m)/|x − m|, leaves
 /// only the error of that short computation (pbrt does the same).
 pub fn sphere_point(center: Vec3, radius: f32, ray: &Ray, t: f32) -> Vec3 {
     center + radius * (ray.at(t) - center).normalize()

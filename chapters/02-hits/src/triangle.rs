@@ -1,27 +1,72 @@
-//! Watertight ray–triangle intersection.
+//! Ray–triangle intersection: the lecture's method (the plane, then the
+//! barycentric coordinates), and the watertight test, which the tracer uses.
+//!
+//! Letters as in the README: the corners are p₀, p₁, p₂, the edges from p₀
+//! are e₁ = p₁ − p₀ and e₂ = p₂ − p₀, and a point of the triangle's plane is
+//! x = p₀ + α·e₁ + β·e₂.
 
 use crate::Ray;
+use crate::intersect_plane;
 use crate::toolkit::Vec3;
 
-/// Where the ray hits the triangle (a, b, c), as t and the barycentric
-/// coordinates (α, β) of the hit point p = a + α(b − a) + β(c − a).
+/// Where the ray hits the triangle (p₀, p₁, p₂), as t and the barycentric
+/// coordinates (α, β) of the hit point x = p₀ + α·e₁ + β·e₂: the lecture's
+/// method, in two steps.
 ///
-/// The lecture's inside test is 0 ≤ α, 0 ≤ β, α + β ≤ 1. Written with the
-/// three weights (1 − α − β, α, β) of the corners, all three must be ≥ 0. We
-/// compute those weights as the signed areas U, V, W of the triangles that the
-/// ray makes with each edge ("edge functions", divided by their sum at the
-/// end), in a frame where the ray runs along the z axis (Woop, Benthin and
-/// Wald, "Watertight Ray/Triangle Intersection", JCGT 2013).
+/// 1. N = e₁ × e₂ is at right angles to the triangle, and |N| is twice its
+///    area. With the unit normal n = N / |N|, the triangle's plane is
+///    n·x + d = 0, d = −n·p₀. The ray meets it where [`intersect_plane`]
+///    says, at x = r(t).
+/// 2. With w = x − p₀ = α·e₁ + β·e₂, take the cross product with e₂ and
+///    with e₁: w × e₂ = α·N and e₁ × w = β·N. So
+///    α = (w × e₂)·n / |N| and β = (e₁ × w)·n / |N|: the signed areas of the
+///    triangles (p₀, x, p₂) and (p₀, p₁, x) as parts of the whole.
 ///
-/// Why not the usual Möller–Trumbore test? It computes each edge test from
-/// different intermediate values, so for a ray exactly through the edge shared
-/// by two triangles, rounding can put the point outside both: a hole. Here the
-/// test of an edge depends only on that edge's two corners and the ray, so both
-/// triangles compute the same number with opposite signs, and a point on the
-/// edge (value 0) counts as inside both. When a value is exactly 0 in f32 we
-/// recompute it in f64, as the paper does, to decide its sign correctly.
+/// x is inside (or on the border) when 0 ≤ α, 0 ≤ β and α + β ≤ 1. Both
+/// sides of the triangle count.
+///
+/// Right on paper; but two triangles that share an edge decide a ray through
+/// it with different numbers, and rounding can make both say "outside". The
+/// tracer uses [`intersect_triangle`], which cannot.
+pub fn triangle_by_plane(
+    [p0, p1, p2]: [Vec3; 3],
+    ray: &Ray,
+    t_min: f32,
+    t_max: f32,
+) -> Option<(f32, f32, f32)> {
+    // EXERCISE(ch02-triangle): the lecture's two steps: where the ray meets the plane through the three corners (in (t_min, t_max)), then the hit point's barycentric coordinates (α, β); a hit only if 0 ≤ α, 0 ≤ β and α + β ≤ 1
+    let (e1, e2) = (p1 - p0, p2 - p0);
+    let area_normal = e1.cross(e2); // N
+    let (n, twice_area) = (area_normal.normalize(), area_normal.length());
+    let t = intersect_plane(n, -n.dot(p0), ray, t_min, t_max)?;
+    let w = ray.at(t) - p0;
+    let alpha = w.cross(e2).dot(n) / twice_area;
+    let beta = e1.cross(w).dot(n) / twice_area;
+    (alpha >= 0.0 && beta >= 0.0 && alpha + beta <= 1.0).then_some((t, alpha, beta))
+    // END EXERCISE
+}
+
+/// Where the ray hits the triangle (p₀, p₁, p₂), as t and the barycentric
+/// coordinates (α, β) of the hit point x = p₀ + α·e₁ + β·e₂: watertight.
+///
+/// The inside test is the lecture's 0 ≤ α, 0 ≤ β, α + β ≤ 1. Written with
+/// the three weights (1 − α − β, α, β) of the corners, all three must be
+/// ≥ 0. We compute those weights as the signed areas U, V, W of the triangles
+/// that the ray makes with each edge ("edge functions", divided by their sum
+/// at the end), in a frame where the ray runs along the z axis (Woop, Benthin
+/// and Wald, "Watertight Ray/Triangle Intersection", JCGT 2013).
+///
+/// Why not [`triangle_by_plane`], or the usual Möller–Trumbore test? Each
+/// computes the test of an edge from numbers that depend on the whole
+/// triangle (its plane, its normal, one corner), so for a ray exactly
+/// through the edge shared by two triangles, rounding can put the point
+/// outside both: a hole. Here the test of an edge depends only on that
+/// edge's two corners and the ray, so both triangles compute the same number
+/// with opposite signs, and a point on the edge (value 0) counts as inside
+/// both. When a value is exactly 0 in f32 we recompute it in f64, as the
+/// paper does, to decide its sign correctly.
 pub fn intersect_triangle(
-    [a, b, c]: [Vec3; 3],
+    [p0, p1, p2]: [Vec3; 3],
     ray: &Ray,
     t_min: f32,
     t_max: f32,
@@ -40,17 +85,17 @@ pub fn intersect_triangle(
         let p = p - ray.origin;
         (p[kx] - sx * p[kz], p[ky] - sy * p[kz], sz * p[kz])
     };
-    let (ax, ay, az) = project(a);
-    let (bx, by, bz) = project(b);
-    let (cx, cy, cz) = project(c);
+    let (x0, y0, z0) = project(p0);
+    let (x1, y1, z1) = project(p1);
+    let (x2, y2, z2) = project(p2);
     // Edge functions: twice the signed area seen from the ray.
-    let mut u = edge(cx, cy, bx, by);
-    let mut v = edge(ax, ay, cx, cy);
-    let mut w = edge(bx, by, ax, ay);
+    let mut u = edge(x2, y2, x1, y1);
+    let mut v = edge(x0, y0, x2, y2);
+    let mut w = edge(x1, y1, x0, y0);
     if u == 0.0 || v == 0.0 || w == 0.0 {
-        u = edge_f64(cx, cy, bx, by);
-        v = edge_f64(ax, ay, cx, cy);
-        w = edge_f64(bx, by, ax, ay);
+        u = edge_f64(x2, y2, x1, y1);
+        v = edge_f64(x0, y0, x2, y2);
+        w = edge_f64(x1, y1, x0, y0);
     }
     // Inside when all three have the same sign (either winding: two-sided).
     let outside = (u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0);
@@ -58,7 +103,7 @@ pub fn intersect_triangle(
     if outside || determinant == 0.0 {
         return None; // a miss, or a ray in the triangle's plane
     }
-    let t = (u * az + v * bz + w * cz) / determinant;
+    let t = (u * z0 + v * z1 + w * z2) / determinant;
     let inside = t.is_finite() && t > t_min && t < t_max;
     inside.then(|| (t, v / determinant, w / determinant))
 }
@@ -73,14 +118,14 @@ fn edge_f64(px: f32, py: f32, qx: f32, qy: f32) -> f32 {
     (px as f64 * qy as f64 - py as f64 * qx as f64) as f32
 }
 
-/// The triangle's unit normal (b − a) × (c − a): counter-clockwise corners,
-/// seen from the front, turn around it.
-pub fn triangle_normal([a, b, c]: [Vec3; 3]) -> Vec3 {
-    (b - a).cross(c - a).normalize()
+/// The triangle's unit normal along e₁ × e₂ = (p₁ − p₀) × (p₂ − p₀):
+/// counter-clockwise corners, seen from the front, turn around it.
+pub fn triangle_normal([p0, p1, p2]: [Vec3; 3]) -> Vec3 {
+    (p1 - p0).cross(p2 - p0).normalize()
 }
 
 /// The barycentric coordinates (α, β) of the point where the ray meets the
-/// plane of the triangle (b − a, c − a), as the watertight test computes
+/// plane of the triangle (p₀, p₁, p₂), as the watertight test computes
 /// them; (0, 0) if the ray runs in the triangle's plane.
 pub fn barycentrics(vertices: [Vec3; 3], ray: &Ray) -> (f32, f32) {
     intersect_triangle(vertices, ray, f32::NEG_INFINITY, f32::INFINITY)
@@ -88,16 +133,16 @@ pub fn barycentrics(vertices: [Vec3; 3], ray: &Ray) -> (f32, f32) {
 }
 
 /// The point of the triangle with barycentric coordinates (α, β):
-/// (1 − α − β)·a + α·b + β·c.
+/// (1 − α − β)·p₀ + α·p₁ + β·p₂.
 ///
-/// Why not r0 + t·rd? That point carries the rounding error of t, which
+/// Why not r(t) = r0 + t·rd? That point carries the rounding error of t, which
 /// grows with the distance travelled, in every direction, off the plane too.
 /// A weighted mean of the corners is off the triangle's plane by at most a
 /// few units in the last place of the corners' coordinates, however thin the
 /// triangle (pbrt computes its hit points the same way), and chapter 4
 /// relies on that bound.
-pub fn triangle_point([a, b, c]: [Vec3; 3], (alpha, beta): (f32, f32)) -> Vec3 {
-    (1.0 - alpha - beta) * a + alpha * b + beta * c
+pub fn triangle_point([p0, p1, p2]: [Vec3; 3], (alpha, beta): (f32, f32)) -> Vec3 {
+    (1.0 - alpha - beta) * p0 + alpha * p1 + beta * p2
 }
 
 /// The shading normal of a smooth triangle at barycentric coordinates
