@@ -42,24 +42,33 @@ impl<'a> Surface<'a> {
     }
 }
 
-/// Lambert's cosine law: light arriving at angle θ to the normal spreads over
-/// 1/cos θ times the area, so a matte surface sends back
-/// albedo × radiance × max(0, n·l).
+/// Lambert's cosine law, the lecture's I_d = k_d · I_L · cos θ: a matte
+/// surface of albedo k_d (`surface.material.color`) under light that gives
+/// I_L (`incoming.radiance`, the irradiance of a surface facing the light)
+/// sends back k_d · I_L · cos θ, where cos θ = n·l for the unit normal n and
+/// the unit vector l towards the light. Light arriving at angle θ spreads
+/// over 1/cos θ times the area. A light behind the surface (n·l < 0) gives
+/// nothing, never a negative amount.
 pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
-    // EXERCISE(ch03-lambert): albedo × radiance × max(0, n·l), with n = surface.normal and l = incoming.direction
+    // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light; nothing for light from behind
     let cos_theta = surface.normal.dot(incoming.direction).max(0.0);
     surface.material.color * incoming.radiance * cos_theta
     // END EXERCISE
 }
 
-/// The light that reaches the eye from `surface`, summed over all lights,
-/// channel by channel.
+/// The light that reaches the eye from `surface`: the sum, channel by
+/// channel, of what each light of the scene adds.
 ///
-/// Ambient light adds albedo × ambient colour. Every other light adds
-/// `reflect(incoming)` if it is in front of the surface (n·l > 0) and
-/// `visible(surface, incoming)` says nothing blocks it. `visible` is not even
-/// asked about a light that could add nothing: one behind the surface,
-/// outside its cone, or whose reflection is zero (a black mirror).
+/// * Ambient light adds albedo × ambient colour, once per ambient light.
+/// * A point or spot light adds `reflect(incoming)` if it is in front of the
+///   surface (n·l > 0) and `visible(surface, incoming)` says nothing blocks
+///   it. `visible` is not even asked about a light that could add nothing:
+///   one behind the surface, outside its cone ([`Arrival::Dark`]), or whose
+///   reflection is zero (a black mirror). Chapter 4's `visible` traces a
+///   shadow ray, so every question costs a ray.
+///
+/// Lights add: two lights make a point brighter than either alone, and the
+/// sum may exceed 1 (the picture clamps it when it is written).
 ///
 /// This chapter passes [`always_visible`] and [`lambert`]; chapter 4 passes a
 /// shadow ray, chapter 5 adds a highlight to `reflect`.
@@ -69,6 +78,7 @@ pub fn direct_light(
     mut visible: impl FnMut(&Surface, &Incoming) -> bool,
     reflect: impl Fn(&Incoming) -> Color,
 ) -> Color {
+    // EXERCISE(ch03-light-loop): the sum over the scene's lights (see `arrival`): ambient adds albedo × its colour; a light in front of the surface adds reflect(incoming) if visible, and visible is asked only when that light could add something
     let mut color = Color::ZERO;
     for light in &scene.lights {
         match arrival(light, surface.hit.point) {
@@ -86,6 +96,7 @@ pub fn direct_light(
         }
     }
     color
+    // END EXERCISE
 }
 
 /// Chapter 3 has no shadows yet: every light is seen from everywhere.

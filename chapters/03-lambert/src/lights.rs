@@ -6,11 +6,16 @@ use crate::toolkit::{Color, Vec3};
 /// Light from a point or spot light arriving at a point of a surface.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Incoming {
-    /// Unit vector from the surface point towards the light (the lecture's l).
+    /// Unit vector l from the surface point towards the light: the
+    /// direction of n·l in the cosine law.
     pub direction: Vec3,
     /// Distance from the surface point to the light.
     pub distance: f32,
-    /// Colour × intensity / r², times the spot's cone factor.
+    /// Colour × intensity / r², times the spot's cone factor: the
+    /// *irradiance* the light gives a surface at distance r that faces it
+    /// (at normal incidence), per channel; the lecture's I_L. Lambert's law
+    /// multiplies it by cos θ for a surface at angle θ. (Not a radiance:
+    /// the field keeps its old name because later chapters use it.)
     pub radiance: Color,
     /// Does the light cast shadows? (Chapter 4 traces no shadow ray if not.)
     pub casts_shadows: bool,
@@ -29,9 +34,10 @@ pub enum Arrival {
 
 /// The light that `light` sends to `point`.
 ///
-/// A point light of intensity I at distance r gives colour × I / r²: its
-/// power spreads over a sphere whose area grows with r². A spot light is a
-/// point light times [`spot_factor`].
+/// A point light of intensity I at distance r gives the irradiance
+/// colour × I / r² to a surface facing it: its power spreads over a sphere
+/// whose area grows with r². A spot light is a point light times
+/// [`spot_factor`].
 // Asked for every light at every hit. Inlined into the tracer's loop over
 // the lights, the point and the answer stay in registers; called, both go
 // through memory. The complete tracer's `trace` is compiled in other
@@ -91,7 +97,7 @@ fn from_point(position: Vec3, power: Color, casts_shadows: bool, point: Vec3) ->
 /// light): 1 within `inner` degrees of the axis, 0 beyond `outer`, and a
 /// smooth step (3s² − 2s³) of the cosine in between, so the edge has no seam.
 pub fn spot_factor(axis: Vec3, inner_degrees: f32, outer_degrees: f32, ray: Vec3) -> f32 {
-    // EXERCISE(ch03-spot): compare axis·ray with the cosines of the two angles: 1 inside inner, 0 outside outer, smooth step 3s² - 2s³ between
+    // EXERCISE(ch03-spot): the cone's factor for this direction: 1 within inner degrees of the axis, 0 beyond outer, between them the smooth step of the cosine (README)
     let cos_angle = axis.dot(ray);
     let cos_inner = inner_degrees.to_radians().cos();
     let cos_outer = outer_degrees.to_radians().cos();

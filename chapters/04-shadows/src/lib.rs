@@ -21,9 +21,18 @@ pub enum ShadowStart {
     HitPoint,
 }
 
-/// The shadow ray from a surface towards a light, and the distance to the
-/// light along it: anything hit before that distance blocks the light.
+/// The shadow ray from a surface towards a light, and the distance t_max to
+/// the light along it: a hit at 0 < t < t_max lies between the surface and
+/// the light and blocks it; anything beyond t_max is behind the light and
+/// blocks nothing.
+///
+/// The ray starts where `origin` says: just off the surface on the light's
+/// side ([`offset_origin`]), or, to show the acne that causes, at the hit
+/// point itself. It points along l, from the surface towards the light
+/// (`incoming.direction`), which lies at the distance `incoming.distance`
+/// from the hit point.
 pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -> (Ray, f32) {
+    // EXERCISE(ch04-shadow-ray): the ray from the surface towards the light, starting where `origin` says, and the t at which it reaches the light
     let point = surface.hit.point;
     let light = point + incoming.direction * incoming.distance;
     let start = match origin {
@@ -35,12 +44,13 @@ pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -
         direction: incoming.direction,
     };
     (ray, start.distance(light))
+    // END EXERCISE
 }
 
 /// Is any shadow-casting object hit for t in (t_min, t_max)? Unlike
 /// `closest_hit`, the first blocker found is enough: we stop there.
 pub fn any_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
-    // EXERCISE(ch04-any-hit): true as soon as one object with shadows = true is hit in (t_min, t_max) (use intersect)
+    // EXERCISE(ch04-any-hit): is some object that casts shadows hit for t in (t_min, t_max)? Stop at the first one found
     objects
         .iter()
         .filter(|object| object.shadows)
@@ -68,8 +78,10 @@ impl World for [Object] {
     }
 }
 
-/// Does the light reach the surface? Traces one shadow ray, unless the light
-/// casts no shadows; then it is free and nothing is traced.
+/// Does the light reach the surface? Traces one shadow ray ([`shadow_ray`],
+/// asked of `world.any_hit` up to the light), unless the light casts no
+/// shadows; then it is free and nothing is traced. Each shadow ray traced is
+/// counted in `stats.shadow`.
 pub fn light_is_free(
     world: &(impl World + ?Sized),
     surface: &Surface,
@@ -77,7 +89,7 @@ pub fn light_is_free(
     origin: ShadowStart,
     stats: &mut Stats,
 ) -> bool {
-    // EXERCISE(ch04-light-is-free): free if the light casts no shadows; else count stats.shadow, build shadow_ray(...) and ask world.any_hit up to the light's distance
+    // EXERCISE(ch04-light-is-free): a light that casts no shadows is free without a ray; otherwise one shadow ray (counted in stats.shadow) decides whether anything stands between the surface and the light
     if !incoming.casts_shadows {
         return true;
     }
