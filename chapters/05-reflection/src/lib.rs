@@ -25,6 +25,16 @@ pub struct Secondary {
     pub kind: SecondaryKind,
 }
 
+impl Secondary {
+    /// Counts this ray in the statistics, by its kind.
+    pub fn count(&self, stats: &mut Stats) {
+        match self.kind {
+            SecondaryKind::Reflection => stats.reflection += 1,
+            SecondaryKind::Refraction => stats.refraction += 1,
+        }
+    }
+}
+
 /// What a recursive (Whitted) tracer decides at each hit. This chapter
 /// answers each question with the mirror; chapter 6 brings a refracted ray,
 /// chapter 7 explicit termination criteria, without changing [`trace`].
@@ -60,7 +70,9 @@ pub trait Whitted: Sync {
 /// This chapter's tracer: mirrors, with recursion ended at a fixed depth.
 #[derive(Debug, Clone, Copy)]
 pub struct Mirrors {
-    /// The scene's `max_depth`: the number of bounces followed.
+    /// The scene's `max_depth`: the number of bounces followed. The primary
+    /// ray has depth 0 and the first mirror ray depth 1, so `max_depth = 1`
+    /// follows exactly one bounce and `max_depth = 0` none.
     pub max_depth: u32,
 }
 
@@ -81,8 +93,9 @@ impl Whitted for Mirrors {
     }
 }
 
-/// Where a ray is on its path: how many bounces from the eye, and the
-/// product of the weights it carries.
+/// Where a ray is on its path: how many bounces from the eye (0 for a
+/// primary ray, 1 for a ray leaving its first hit), and the product of the
+/// weights along the path up to and including its own.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Path {
     pub depth: u32,
@@ -97,10 +110,13 @@ impl Path {
     };
 }
 
-/// The colour seen along `ray`, traced against `world`.
+/// The colour seen along `ray`, traced against `world`, by a ray at `path`
+/// (its depth and weight).
 ///
-/// The background if the ray hits nothing; otherwise the hit's local light
-/// plus what its secondary rays see.
+/// The background if the ray hits nothing: the path ends there (the first
+/// of chapter 7's criteria, counted in `stats.ended_no_hit`). Otherwise the
+/// hit's local light, plus the light its secondary rays bring back
+/// ([`follow_secondary_rays`], which calls `trace` again: the recursion).
 pub fn trace(
     tracer: &impl Whitted,
     scene: &Scene,
@@ -109,6 +125,7 @@ pub fn trace(
     path: Path,
     stats: &mut Stats,
 ) -> Color {
+    // EXERCISE(ch05-trace): the background if the ray hits nothing (a path ended by no hit); else the hit's local light plus the light that its secondary rays bring back along this path
     let Some(hit) = world.closest_hit(ray, 0.0, f32::INFINITY) else {
         stats.ended_no_hit += 1;
         return scene.image.background;
@@ -120,12 +137,25 @@ pub fn trace(
         return local; // a matte, opaque surface: its local light is all there is
     }
     local + follow_secondary_rays(tracer, scene, world, secondary, path, stats)
+    // END EXERCISE
 }
 
-/// The light that reaches a surface along its secondary rays: for each one
-/// that may be traced, its weight times the colour seen along it, found by
-/// calling `trace` again (the recursion).
-fn follow_secondary_rays(
+/// The light that reaches a surface along its secondary rays, for a hit
+/// reached by a ray at `path`.
+///
+/// Each secondary ray is one bounce deeper than the ray that made the hit,
+/// and its path's weight is the product of the weights along the way:
+/// path.weight × secondary.weight. If the tracer lets a ray at that depth
+/// and weight go on (`may_trace`), it is counted and traced (by calling
+/// [`trace`] again), and the colour it sees counts with the ray's own weight:
+///
+/// ```text
+/// colour = Σ over the rays traced  secondary.weight × trace(secondary.ray, depth + 1)
+/// ```
+///
+/// (Only the ray's own weight multiplies what it sees: the weights before
+/// it multiply the result on the way back up the recursion.)
+pub fn follow_secondary_rays(
     tracer: &impl Whitted,
     scene: &Scene,
     world: &(impl World + ?Sized),
@@ -133,6 +163,7 @@ fn follow_secondary_rays(
     path: Path,
     stats: &mut Stats,
 ) -> Color {
+    // EXERCISE(ch05-recursion): the sum, over the secondary rays that the tracer lets go on one bounce deeper (with the path's weight times the ray's own), of the ray's weight times the colour seen along it; count each ray traced
     let mut color = Color::ZERO;
     for secondary in secondary_rays.into_iter().flatten() {
         let next = Path {
@@ -140,15 +171,13 @@ fn follow_secondary_rays(
             weight: path.weight * secondary.weight,
         };
         if tracer.may_trace(next.depth, next.weight, stats) {
-            match secondary.kind {
-                SecondaryKind::Reflection => stats.reflection += 1,
-                SecondaryKind::Refraction => stats.refraction += 1,
-            }
+            secondary.count(stats);
             let seen = trace(tracer, scene, world, &secondary.ray, next, stats);
             color += secondary.weight * seen;
         }
     }
     color
+    // END EXERCISE
 }
 
 /// Renders a scene with a Whitted tracer against `world` (the scene's

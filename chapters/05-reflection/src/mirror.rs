@@ -9,15 +9,23 @@ use crate::{Incoming, Ray, Secondary, SecondaryKind, Surface, offset_origin};
 /// The component of d along n flips sign and the rest is kept, so the angle
 /// out equals the angle in, and |d_o| = |d_i|.
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
-    // EXERCISE(ch05-reflect): d_o = d_i - 2(d_i·n)n
+    // EXERCISE(ch05-reflect): the mirror direction of d about n: the part of d along n reversed, the part across n kept
     d - 2.0 * d.dot(n) * n
     // END EXERCISE
 }
 
 /// The mirror ray leaving `surface` for a ray that arrived along `incoming`,
 /// carrying `weight` of its colour; none if the weight is zero (nothing
-/// would come of it). It starts off the surface like a shadow ray.
+/// would come of it, and a tracer spawns no ray of weight zero).
+///
+/// Its direction is the mirror direction of the incoming one, [`reflect`]
+/// (normalised: rounding may leave it a little off unit length). It starts
+/// off the surface like a shadow ray, by `offset_origin` towards the side it
+/// leaves to; from the hit point itself it could hit its own surface again.
+/// The weight is whatever the caller gives: this chapter's tracer passes the
+/// material's reflectance, chapter 6's adds what glass reflects.
 pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Secondary> {
+    // EXERCISE(ch05-mirror-ray): none for a zero weight; else a reflection carrying `weight`, in the mirror direction of the incoming ray, starting just off the surface on the side it leaves to
     if weight == Color::ZERO {
         return None;
     }
@@ -28,6 +36,7 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
         weight,
         kind: SecondaryKind::Reflection,
     })
+    // END EXERCISE
 }
 
 /// The highlight of a light on a shiny surface (Blinn–Phong):
@@ -37,7 +46,7 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
 /// A mirror ray is a single direction and never hits a point light, which
 /// has no size; the highlight puts the light's reflection back in.
 pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
-    // EXERCISE(ch05-highlight): h = normalise(l + to_eye); specular × radiance × max(0, n·h)^shininess (zero if specular is 0)
+    // EXERCISE(ch05-highlight): Blinn–Phong: the specular weight times the light's radiance times the cosine between the normal and the unit halfway vector of the directions to the light and to the eye, raised to the shininess
     let material = surface.material;
     if material.specular == 0.0 {
         return Color::ZERO;

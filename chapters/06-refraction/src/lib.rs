@@ -24,21 +24,32 @@ pub struct Split {
 /// Splits the light of a ray arriving at `surface` between reflection and
 /// refraction.
 ///
-/// Entering or leaving is decided by the sign of d·n with the surface's
-/// outward normal: d·n < 0 means the ray comes from outside, from index 1
-/// into the material's `ior`; otherwise it leaves, from `ior` into 1. (A
-/// material's `ior` is relative to what surrounds the object: an air bubble
-/// inside glass has ior 1/1.5.)
+/// 1. Entering or leaving: the sign of d·n with the surface's *outward*
+///    normal `surface.hit.normal`. d·n < 0: the ray comes from outside, from
+///    index n₁ = 1 into n₂ = the material's `ior`; otherwise it leaves, from
+///    n₁ = `ior` into n₂ = 1. (A material's `ior` is relative to what
+///    surrounds the object: an air bubble inside glass has ior 1/1.5.)
+/// 2. The refracted direction by Snell's law with η = n₁/n₂ and the normal
+///    on the side the ray comes from, `surface.normal` (chapter 3 turned it
+///    to face the ray already).
+/// 3. No refracted direction (total internal reflection): the transmitted
+///    weight goes to the mirror ray, which gets reflectance + transparency.
+/// 4. Otherwise the transmitted weight T is shared: R = Schlick's Fresnel
+///    term if the material asks for it (else 0), with cos θ taken on the side
+///    of the smaller index; the mirror ray gets reflectance + T·R and the
+///    refracted ray T·(1 − R). So the two shares add up to T.
 pub fn split(surface: &Surface, incoming: &Ray) -> Split {
+    // EXERCISE(ch06-split): entering or leaving (from the outward normal), the indices on either side, Snell's refracted direction; on total internal reflection everything transmitted is reflected, else the transmitted weight is shared by the Fresnel term (if the material asks for it) between the mirror ray and the refracted one
     let material = surface.material;
     let transparency = Color::splat(material.transparency);
-    let entering = incoming.direction.dot(surface.hit.normal) < 0.0;
+    let d = incoming.direction;
+    let entering = d.dot(surface.hit.normal) < 0.0;
     let (n1, n2) = if entering {
         (1.0, material.ior)
     } else {
         (material.ior, 1.0)
     };
-    let Some(direction) = refract(incoming.direction, surface.normal, n1 / n2) else {
+    let Some(direction) = refract(d, surface.normal, n1 / n2) else {
         // Total internal reflection: the transmitted light is reflected too.
         return Split {
             reflected: material.reflectance + transparency,
@@ -46,9 +57,10 @@ pub fn split(surface: &Surface, incoming: &Ray) -> Split {
         };
     };
     let fresnel = if material.fresnel {
-        // The cosine on the side of the smaller index.
-        let cos_in = -surface.normal.dot(incoming.direction);
-        let cos_out = surface.normal.dot(-direction);
+        // The cosine on the side of the smaller index: of the arriving ray
+        // going into the denser medium, of the refracted ray coming out.
+        let cos_in = -surface.normal.dot(d);
+        let cos_out = -surface.normal.dot(direction);
         schlick(if n1 <= n2 { cos_in } else { cos_out }, n1, n2)
     } else {
         0.0
@@ -57,6 +69,7 @@ pub fn split(surface: &Surface, incoming: &Ray) -> Split {
         reflected: material.reflectance + transparency * fresnel,
         refracted: Some((transparency * (1.0 - fresnel), direction)),
     }
+    // END EXERCISE
 }
 
 /// The refracted ray, started just off the surface on the far side; none if

@@ -10,13 +10,20 @@ use toolkit::{Color, Image, Scene, Stats};
 
 /// The lecture's three termination criteria. A path ends when
 /// 1. its ray hits nothing: the background is all there is to see;
-/// 2. it has bounced `max_depth` times; or
-/// 3. its weight, the product of the weights along it, falls below
-///    `min_weight` (in every channel): whatever it found could change the
-///    pixel by less than that.
+/// 2. it would bounce more than `max_depth` times; or
+/// 3. its weight, the product of the weights along it, is below
+///    `min_weight` in every channel ([`below_threshold`]): whatever it
+///    finds counts with less than that weight in the pixel.
 ///
-/// The first needs no decision (see [`trace`]); the other two are here, and
-/// each path they end is counted in the statistics.
+/// The weight bounds a path's share of the pixel *relative to the colour
+/// it would bring back*. Colours are not clamped until the pixel is
+/// written, and a brightly lit surface can be far above 1, so a path below
+/// the threshold can still change the pixel by more than `min_weight`
+/// (`scenes/floodlit.toml`). The threshold bounds the error only where the
+/// colours are at most 1.
+///
+/// The first criterion needs no decision (see [`trace`]); the other two are
+/// here, and each path they end is counted in the statistics.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Termination {
     pub max_depth: u32,
@@ -31,6 +38,17 @@ impl Termination {
             min_weight: scene.trace.min_weight,
         }
     }
+}
+
+/// Is a path's `weight` below `min_weight` in every channel?
+///
+/// Only then is the path not worth following: a weight of (0.5, 0.0001,
+/// 0.0001) still carries half of the red that the path finds. A weight
+/// equal to `min_weight` is not below it.
+pub fn below_threshold(weight: Color, min_weight: f32) -> bool {
+    // EXERCISE(ch07-below-threshold): whether no channel of the weight reaches min_weight
+    weight.max_element() < min_weight
+    // END EXERCISE
 }
 
 /// The complete tracer: chapter 6's rays, ended by explicit criteria.
@@ -49,12 +67,17 @@ impl Whitted for Tracer {
         glass.secondary_rays(surface, incoming)
     }
 
+    /// A ray at `depth` (1 for the first bounce) on a path of `weight` may
+    /// be traced unless the depth criterion ends the path (more than
+    /// `max_depth` bounces) or, failing that, the weight criterion. Each path
+    /// ended is counted once, by the criterion that ended it, the depth
+    /// first.
     fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
-        // EXERCISE(ch07-may-trace): false (and count stats.ended_max_depth) beyond max_depth; false (and count stats.ended_threshold) if every channel of weight < min_weight; else true
+        // EXERCISE(ch07-may-trace): a ray may go on unless its depth is beyond max_depth or its path's weight is below the threshold; count each path ended by the criterion that ended it (the depth first)
         if depth > self.termination.max_depth {
             stats.ended_max_depth += 1;
             false
-        } else if weight.max_element() < self.termination.min_weight {
+        } else if below_threshold(weight, self.termination.min_weight) {
             stats.ended_threshold += 1;
             false
         } else {

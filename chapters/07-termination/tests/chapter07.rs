@@ -2,15 +2,52 @@
 //! count them.
 
 use ch07_termination::toolkit::snapshot::assert_image;
-use ch07_termination::toolkit::{Scene, Vec3};
-use ch07_termination::{CHAPTER, Glass, Mirrors, Termination, render_terminated, render_whitted};
+use ch07_termination::toolkit::{Color, Scene, Vec3};
+use ch07_termination::{
+    CHAPTER, Glass, Mirrors, Termination, below_threshold, render_terminated, render_whitted,
+};
 
 fn mirrors(reflectance: f32) -> Scene {
+    mirrors_of(Vec3::splat(reflectance))
+}
+
+/// Two facing mirrors of `reflectance` (per channel): every ray hits one.
+fn mirrors_of(reflectance: Color) -> Scene {
     let mut scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mirrors.toml"))
         .unwrap()
         .with_size(40, 30);
-    scene.materials[0].reflectance = Vec3::splat(reflectance);
+    scene.materials[0].reflectance = reflectance;
     scene
+}
+
+#[test]
+fn a_weight_is_below_the_threshold_only_if_every_channel_is() {
+    for (weight, below, why) in [
+        (Color::splat(0.05), true, "every channel is below 0.1"),
+        (Color::splat(0.09), true, "every channel is below 0.1"),
+        (
+            Color::new(0.2, 0.0, 0.0),
+            false,
+            "red still carries 0.2: a path ends only when every channel is below min_weight",
+        ),
+        (
+            Color::new(0.0, 0.0, 0.3),
+            false,
+            "blue still carries 0.3: a path ends only when every channel is below min_weight \
+             (not the mean, not the brightness)",
+        ),
+        (
+            Color::new(0.1, 0.0, 0.0),
+            false,
+            "red is 0.1, equal to min_weight, not below it",
+        ),
+    ] {
+        assert_eq!(
+            below_threshold(weight, 0.1),
+            below,
+            "weight {weight}, min_weight 0.1: {why}"
+        );
+    }
 }
 
 #[test]
@@ -24,8 +61,16 @@ fn in_two_perfect_mirrors_only_depth_ends_paths() {
         let primary = stats.primary;
         assert_eq!(stats.ended_no_hit, 0, "every ray hits a mirror");
         assert_eq!(stats.ended_threshold, 0, "weight stays 1");
-        assert_eq!(stats.ended_max_depth, primary, "one end per path");
-        assert_eq!(stats.reflection, primary * max_depth as u64);
+        assert_eq!(
+            stats.reflection,
+            primary * max_depth as u64,
+            "max_depth = {max_depth} follows exactly {max_depth} bounces: {max_depth} mirror rays \
+             per pixel (the first bounce is depth 1; a ray beyond max_depth is not traced)"
+        );
+        assert_eq!(
+            stats.ended_max_depth, primary,
+            "each path ends once, by depth: count it in stats.ended_max_depth"
+        );
         assert!(image.pixels.iter().all(|c| c.is_finite()));
     }
 }
@@ -39,20 +84,105 @@ fn half_mirrors_and_threshold_one_tenth_trace_three_reflections() {
             min_weight: 0.1,
         };
         let (_, stats) = render_terminated(&mirrors(0.5), termination, || {});
-        assert_eq!(stats.reflection, 3 * stats.primary, "max_depth {max_depth}");
+        assert_eq!(
+            stats.reflection,
+            3 * stats.primary,
+            "max_depth {max_depth}, weights 0.5, 0.25, 0.125, 0.0625: three mirror rays per pixel"
+        );
         if max_depth == 3 {
             assert_eq!(
                 stats.ended_max_depth, stats.primary,
-                "at 3 the depth ends it first"
+                "at max_depth 3 the fourth ray is both too deep and too weak: the depth is \
+                 checked first and ends it"
             );
         } else {
             assert_eq!(
                 stats.ended_threshold, stats.primary,
-                "max_depth {max_depth}"
+                "max_depth {max_depth}: each path ends once, by the threshold: count it in \
+                 stats.ended_threshold"
             );
             assert_eq!(stats.ended_max_depth, 0);
         }
     }
+}
+
+#[test]
+fn a_weight_equal_to_the_threshold_is_traced() {
+    // Weights 0.5, 0.25, 0.125 (exactly min_weight: not below it), 0.0625.
+    let termination = Termination {
+        max_depth: 10,
+        min_weight: 0.125,
+    };
+    let (_, stats) = render_terminated(&mirrors(0.5), termination, || {});
+    assert_eq!(
+        stats.reflection,
+        3 * stats.primary,
+        "min_weight 0.125: the third mirror ray has weight 0.125, not below the threshold, and is \
+         traced"
+    );
+}
+
+#[test]
+fn a_path_ends_by_weight_only_when_every_channel_is_below_the_threshold() {
+    // Red weights 0.5, 0.25, 0.125, 0.0625; green and blue 0.05 from the
+    // first bounce on. Threshold 0.1: red keeps three rays going.
+    let termination = Termination {
+        max_depth: 10,
+        min_weight: 0.1,
+    };
+    let scene = mirrors_of(Color::new(0.5, 0.05, 0.05));
+    let (_, stats) = render_terminated(&scene, termination, || {});
+    assert_eq!(
+        stats.reflection,
+        3 * stats.primary,
+        "mirrors of reflectance (0.5, 0.05, 0.05), min_weight 0.1: red carries 0.5, 0.25, 0.125 \
+         over three bounces, so each pixel traces three mirror rays; a path ends only when every \
+         channel of its weight is below min_weight (found {} per pixel)",
+        stats.reflection as f64 / stats.primary as f64
+    );
+}
+
+/// The weight bounds a path's share relative to the colour it brings back,
+/// which can be far above 1: here a cut path of weight 0.0008 < 0.001 would
+/// have brought back a floodlit wall of colour up to 400.
+#[test]
+fn a_path_below_the_threshold_can_change_a_pixel_by_more_than_the_threshold() {
+    let scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/floodlit.toml"))
+        .unwrap()
+        .with_size(40, 30);
+    let criteria = Termination::of(&scene);
+    assert_eq!(criteria.min_weight, 0.001);
+    let (cut, cut_stats) = render_terminated(&scene, criteria, || {});
+    let all = Termination {
+        min_weight: 0.0,
+        ..criteria
+    };
+    let (full, _) = render_terminated(&scene, all, || {});
+    assert_eq!(
+        cut_stats.ended_threshold, cut_stats.primary,
+        "the pane's weight 0.0008 is below min_weight 0.001: every mirror ray is cut"
+    );
+    let (cut8, full8) = (cut.to_rgb8(), full.to_rgb8());
+    let (index, levels) = (cut8.as_raw().iter())
+        .zip(full8.as_raw())
+        .map(|(&a, &b)| a.abs_diff(b))
+        .enumerate()
+        .max_by_key(|&(_, d)| d)
+        .unwrap();
+    let pixel = (index / 3) as u32;
+    let (x, y) = (pixel % cut.width, pixel / cut.width);
+    let (a, b) = (cut.get(x, y), full.get(x, y));
+    println!("pixel ({x}, {y}): {a} with min_weight 0.001, {b} with 0; {levels} levels apart");
+    assert!(
+        levels > 1 && (b - a).max_element() > 1.0 / 255.0,
+        "a path of weight below 0.001 brings back up to 0.0008 × 400: pixel ({x}, {y}) should \
+         differ by far more than 1/255 between min_weight 0.001 and 0; found {a} and {b}"
+    );
+    assert!(
+        (b - a).max_element() > 50.0 * 0.001,
+        "the change, {}, is far more than min_weight",
+        (b - a).max_element()
+    );
 }
 
 #[test]
