@@ -16,16 +16,16 @@
 //! Both tracers test every object in turn (no BVH), so that only the
 //! effects differ.
 //!
-//! Criterion measures each render in turn. On a shared machine the speed
-//! drifts over the minutes that takes, so the first three are then timed
-//! again in alternation, round after round, and the median of the
-//! per-round ratios is printed: drift affects both sides of a ratio alike.
+//! On a shared machine the speed drifts over the minutes a measurement
+//! takes, so the renders are timed in alternation, round after round, and
+//! the median of the per-round ratios is printed: drift affects both sides
+//! of a ratio alike. (A plain harness: criterion's statistics add nothing
+//! to that, and its build was a sixth of a fresh `cargo test`.)
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use ch03_lambert::render_lambert;
-use criterion::Criterion;
 use raybook::bench::median;
 use raybook::toolkit::cli::EffectPlan;
 use raybook::toolkit::{Image, Scene};
@@ -44,7 +44,7 @@ fn scenes() -> (Scene, Scene) {
 /// A render to time, and its name.
 type Render<'a> = (&'static str, Box<dyn Fn() -> Image + 'a>);
 
-/// The renders compared.
+/// The renders renders.
 fn renders<'a>(full: &'a Scene, reduced: &'a Scene) -> Vec<Render<'a>> {
     let forced = Tracer {
         termination: Termination::of(reduced),
@@ -74,26 +74,14 @@ fn renders<'a>(full: &'a Scene, reduced: &'a Scene) -> Vec<Render<'a>> {
     ]
 }
 
-fn with_criterion(renders: &[Render]) {
-    let mut criterion = Criterion::default().configure_from_args();
-    let mut group = criterion.benchmark_group("chapter 3's default scene, 320x240");
-    group.sample_size(30);
-    for (name, render) in renders {
-        group.bench_function(*name, |b| b.iter(render));
-    }
-    group.finish();
-    criterion.final_summary();
-}
-
-/// Times the first three renders in alternation and prints, for each, the
-/// median time and the median ratio to chapter 3 within a round.
+/// Times the renders in alternation and prints, for each, the median time
+/// and the median ratio to chapter 3 within a round.
 fn interleaved(renders: &[Render]) {
     const ROUNDS: usize = 21;
     const RENDERS_PER_ROUND: u32 = 10;
-    let compared = &renders[..3];
-    let mut times = vec![Vec::new(); compared.len()];
+    let mut times = vec![Vec::new(); renders.len()];
     for _ in 0..ROUNDS {
-        for (i, (_, render)) in compared.iter().enumerate() {
+        for (i, (_, render)) in renders.iter().enumerate() {
             let start = Instant::now();
             for _ in 0..RENDERS_PER_ROUND {
                 black_box(render());
@@ -105,7 +93,7 @@ fn interleaved(renders: &[Render]) {
     println!("\nin alternation, {ROUNDS} rounds of {RENDERS_PER_ROUND} renders each:");
     println!("| render | median time | median ratio to chapter 3 |");
     println!("| --- | ---: | ---: |");
-    for (i, (name, _)) in compared.iter().enumerate() {
+    for (i, (name, _)) in renders.iter().enumerate() {
         let ratios = (times[i].iter().zip(&times[0])).map(|(t, base)| ms(t) / ms(base));
         let time = median(times[i].iter().map(ms));
         println!("| {name} | {time:.3} ms | {:.3} |", median(ratios));
@@ -121,6 +109,5 @@ fn main() {
         "the two tracers must make the same picture"
     );
     assert_eq!(renders[1].1(), renders[2].1(), "the choice changes nothing");
-    with_criterion(&renders);
     interleaved(&renders);
 }

@@ -1,7 +1,9 @@
 //! raybook: the complete tracer of the workbook and its tools.
 //!
 //! The tracer is the most advanced chapter's; this crate adds the tools
-//! around it (the `raybook` command line).
+//! around it (the `raybook` command line): bench and accuracy here, and
+//! progress, verify and handout from the `workbook` crate, which a student
+//! runs on its own (`cargo run -p workbook -- progress`).
 
 pub use ch07_termination::toolkit;
 /// NFF, the SPD scenes' format: read by the toolkit, beside TOML and OBJ.
@@ -9,10 +11,10 @@ pub use toolkit::scene::nff;
 
 pub mod accuracy;
 pub mod bench;
-pub mod handout;
-pub mod progress;
 pub mod tracer;
-pub mod verify;
+
+/// The workbook's tools (the `workbook` crate), under `raybook` too.
+pub use workbook::{handout, progress, verify};
 
 use toolkit::cli::Chapter;
 use toolkit::{Image, Scene, Stats};

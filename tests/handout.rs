@@ -1,18 +1,19 @@
 //! The maintainers' check of the exercises (rustlings has one too): every
-//! chapter with exercises has them, the handout compiles, each region is
-//! covered by a test that fails in the handout until the student writes it,
-//! and the lecture's own methods, written as a student would, pass. (That
-//! the reference passes is the rest of `cargo test`.) The variants are
-//! built as `raybook::handout::check` describes; the classic mistakes of the
-//! chapters' mistakes.toml are replayed by `raybook handout --check-mistakes`,
-//! which CI runs after the tests.
+//! chapter with exercises has them, and each region is covered by a test
+//! that fails in the handout until the student writes it. (That the
+//! reference passes is the rest of `cargo test`.) What needs a second build
+//! of the workbook runs outside `cargo test`: `workbook handout --check`
+//! (the lecture's own methods pass, the whole handout compiles), which CI
+//! runs after the tests, and `workbook handout --check-mistakes` (the
+//! classic mistakes of the chapters' mistakes.toml are caught and named).
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-use raybook::handout::check::{self, Check};
+use raybook::handout::check;
+use raybook::handout::take_out::ReferenceTests;
 use raybook::handout::{Region, workspace_regions};
 use raybook::toolkit::chapters::{self, ChapterEntry};
 
@@ -53,6 +54,23 @@ fn every_chapter_with_exercises_has_some_and_the_workbook_at_least_22() {
             region.id
         );
         assert!(!region.hint.is_empty(), "{}: no hint", region.id);
+        let seam = format!(
+            "crate::toolkit::exercise::solution_begins({:?});",
+            region.id
+        );
+        assert_eq!(
+            region.body.first().map(|l| l.trim()),
+            Some(seam.as_str()),
+            "{}:{line}: the solution of {} starts with the call that lets the check take it out",
+            file.display(),
+            region.id
+        );
+        assert!(
+            region
+                .message()
+                .starts_with(&format!("not yet implemented: {}: ", region.id)),
+            "the handout's todo! and the check's panic say the same"
+        );
     }
     let ids: BTreeSet<&str> = regions.iter().map(|(_, _, r)| r.id.as_str()).collect();
     assert_eq!(ids.len(), regions.len(), "exercise ids are unique");
@@ -84,51 +102,51 @@ fn every_recorded_mistake_and_lecture_solution_names_an_exercise() {
     }
 }
 
-/// Builds and tests each chapter with its exercises taken out, then the
-/// lecture's methods, then the whole handout: one test, since the variants
-/// share one folder.
+/// Each chapter's exercises taken out: its own tests fail, and each
+/// exercise's todo! is among the panics. The reference's test binaries are
+/// run with the solutions taken out at run time (`toolkit::exercise`), so
+/// nothing is built again.
 #[test]
-fn the_handout_compiles_each_exercise_has_a_failing_test_and_the_lectures_methods_pass() {
+fn each_exercise_makes_a_test_of_its_chapter_fail() {
     let start = Instant::now();
-    let check = Check::new(&root()).unwrap();
-    eprintln!("dependencies shared ({:.0?})", start.elapsed());
+    let tests = ReferenceTests::build(&root()).unwrap();
     let regions = workspace_regions(&root()).unwrap();
     for entry in exercise_chapters() {
-        each_exercise_makes_a_test_fail(&check, entry, &regions);
+        each_exercise_makes_a_test_fail(&tests, entry, &regions);
     }
-    the_lectures_methods_pass(&check);
-    the_whole_handout_builds(&check);
-    eprintln!("handout check: {:.0?} in all", start.elapsed());
+    eprintln!(
+        "every exercise is reached by a test ({:.0?})",
+        start.elapsed()
+    );
 }
 
 /// A chapter's exercises taken out alone: its own tests must fail, and each
 /// exercise's todo! must be among the panics.
 fn each_exercise_makes_a_test_fail(
-    check: &Check,
+    tests: &ReferenceTests,
     entry: &ChapterEntry,
     regions: &[(PathBuf, usize, Region)],
 ) {
     let step = Instant::now();
     let chapter = entry.number();
-    check
-        .write_variant(|r| (r.chapter() == Some(chapter)).then(|| r.todo_line()))
-        .unwrap();
     let package = entry.package();
-    let (ok, output, parsed) = check.test(&package).unwrap();
-    assert!(
-        !ok && parsed.failed > 0 && parsed.compile_error.is_none(),
-        "{package} with its exercises taken out must build and fail its tests:\n{output}"
-    );
-    for (file, line, region) in regions
+    let mine: Vec<_> = regions
         .iter()
         .filter(|(_, _, r)| r.chapter() == Some(chapter))
-    {
+        .collect();
+    let ids: Vec<&str> = mine.iter().map(|(_, _, r)| r.id.as_str()).collect();
+    let (ok, output, parsed) = tests.run_taken_out(&root(), entry, &ids).unwrap();
+    assert!(
+        !ok && parsed.failed > 0,
+        "{package} with its exercises taken out must fail its tests:\n{output}"
+    );
+    for (file, line, region) in mine {
+        let panic = format!("not yet implemented: {}: ", region.id);
         assert!(
-            output.contains(&region.message()),
-            "{}:{line}: no test of {package} reaches exercise {} (expected the panic {:?}):\n{output}",
+            output.contains(&panic),
+            "{}:{line}: no test of {package} reaches exercise {} (expected the panic {panic:?}):\n{output}",
             file.display(),
             region.id,
-            region.message()
         );
     }
     eprintln!(
@@ -136,60 +154,6 @@ fn each_exercise_makes_a_test_fail(
         parsed.failed,
         step.elapsed()
     );
-}
-
-/// The lecture's own methods (the chapters' `[[lecture]]` solutions), all
-/// written in at once: every test of their chapters passes.
-fn the_lectures_methods_pass(check: &Check) {
-    let step = Instant::now();
-    let files = check::mistakes_files(&root()).unwrap();
-    let solutions: Vec<_> = files.iter().flat_map(|(_, f)| f.lecture.iter()).collect();
-    if solutions.is_empty() {
-        return;
-    }
-    check
-        .write_variant(|r| {
-            solutions
-                .iter()
-                .find(|s| s.exercise == r.id)
-                .map(|s| s.body.clone())
-        })
-        .unwrap();
-    for (chapter, file) in files.iter().filter(|(_, f)| !f.lecture.is_empty()) {
-        let (ok, output, _) = check.test(&chapter.package()).unwrap();
-        let ids: Vec<&str> = file.lecture.iter().map(|l| l.exercise.as_str()).collect();
-        assert!(
-            ok,
-            "{}: the lecture's method for {ids:?} fails a test:\n{output}",
-            chapter.folder
-        );
-    }
-    eprintln!(
-        "{} lecture solutions pass ({:.0?})",
-        solutions.len(),
-        step.elapsed()
-    );
-}
-
-/// The handout itself, every exercise taken out: every crate and binary
-/// compiles (each chapter's tests compiled above, with its own exercises
-/// out; taking out the others' changes no signature).
-fn the_whole_handout_builds(check: &Check) {
-    let step = Instant::now();
-    check.write_variant(|r| Some(r.todo_line())).unwrap();
-    let (ok, output) = check
-        .cargo(&[
-            "build",
-            "--offline",
-            "--workspace",
-            "--lib",
-            "--bins",
-            "--color",
-            "never",
-        ])
-        .unwrap();
-    assert!(ok, "the handout does not compile:\n{output}");
-    eprintln!("the whole handout builds ({:.0?})", step.elapsed());
 }
 
 #[test]

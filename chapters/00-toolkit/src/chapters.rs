@@ -2,7 +2,7 @@
 //!
 //! It is the one place that names the chapters, as rustlings' `info.toml`
 //! names its exercises: the chapter binaries' messages, the effects each
-//! chapter can simulate, `raybook progress`, `handout` and `verify`, and the
+//! chapter can simulate, `workbook progress`, `handout` and `verify`, and the
 //! tests that walk every chapter's scenes all derive from it. The file is
 //! built into the toolkit, so the list is the same wherever a binary runs.
 
@@ -30,14 +30,14 @@ pub struct ChapterEntry {
     /// Does the handout take exercises out of it?
     #[serde(default)]
     pub exercises: bool,
-    /// The picture `raybook verify` checks a student's tracer against.
+    /// The picture `workbook verify` checks a student's tracer against.
     pub verify: Option<VerifyReference>,
     /// A crate beside the chain of chapters rather than a step of it.
     #[serde(default)]
     pub companion: bool,
 }
 
-/// A chapter's reference picture for `raybook verify`.
+/// A chapter's reference picture for `workbook verify`.
 #[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct VerifyReference {

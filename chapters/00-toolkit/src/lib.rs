@@ -3,6 +3,7 @@
 pub mod chapters;
 pub mod cli;
 pub mod compare;
+pub mod exercise;
 pub mod image;
 pub mod scene;
 pub mod snapshot;

@@ -28,6 +28,7 @@ impl Ray {
     /// The point r(t) = r0 + t·rd.
     pub fn at(&self, t: f32) -> Vec3 {
         // EXERCISE(ch01-at): the point of the ray at distance t from its origin
+        crate::toolkit::exercise::solution_begins("ch01-at");
         self.origin + t * self.direction
         // END EXERCISE
     }
@@ -67,6 +68,7 @@ impl Camera {
     /// * half_width = half_height · width / height, so pixels are square.
     pub fn new(spec: &CameraSpec, width: u32, height: u32) -> Camera {
         // EXERCISE(ch01-frame): the camera's unit frame (forward towards look_at, right to the viewer's right, up at right angles to both) and the image plane's half width and half height at distance 1, from the vertical field of view and the aspect ratio
+        crate::toolkit::exercise::solution_begins("ch01-frame");
         let forward = (spec.look_at - spec.eye).normalize();
         let right = forward.cross(spec.up).normalize();
         let up = right.cross(forward);
@@ -91,6 +93,7 @@ impl Camera {
     /// scene, the opposite way to the light that makes the picture.
     pub fn ray_through(&self, px: f32, py: f32) -> Ray {
         // EXERCISE(ch01-ray-through): the ray from the eye through the point of the image plane at pixel position (px, py), the image's top-left corner being (0, 0) and its bottom-right (width, height)
+        crate::toolkit::exercise::solution_begins("ch01-ray-through");
         let u = (2.0 * px / self.width as f32 - 1.0) * self.half_width;
         let v = (1.0 - 2.0 * py / self.height as f32) * self.half_height;
         Ray::new(self.eye, self.forward + u * self.right + v * self.up)

@@ -103,6 +103,7 @@ fn largest(p: Vec3) -> f32 {
 /// an object behind it is rejected without more work.
 pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
     // EXERCISE(ch02-closest): the hit of the object met nearest along the ray within (t_min, t_max), as a Hit, or None if the ray meets none
+    crate::toolkit::exercise::solution_begins("ch02-closest");
     let mut closest: Option<(f32, usize)> = None;
     for (index, object) in objects.iter().enumerate() {
         let bound = closest.map_or(t_max, |(t, _)| t);

@@ -51,6 +51,7 @@ impl<'a> Surface<'a> {
 /// nothing, never a negative amount.
 pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
     // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light; nothing for light from behind
+    crate::toolkit::exercise::solution_begins("ch03-lambert");
     let cos_theta = surface.normal.dot(incoming.direction).max(0.0);
     surface.material.color * incoming.radiance * cos_theta
     // END EXERCISE
@@ -79,6 +80,7 @@ pub fn direct_light(
     reflect: impl Fn(&Incoming) -> Color,
 ) -> Color {
     // EXERCISE(ch03-light-loop): the sum over the scene's lights (see `arrival`): ambient adds albedo × its colour; a light in front of the surface adds reflect(incoming) if visible, and visible is asked only when that light could add something
+    crate::toolkit::exercise::solution_begins("ch03-light-loop");
     let mut color = Color::ZERO;
     for light in &scene.lights {
         match arrival(light, surface.hit.point) {

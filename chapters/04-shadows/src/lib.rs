@@ -33,6 +33,7 @@ pub enum ShadowStart {
 /// from the hit point.
 pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -> (Ray, f32) {
     // EXERCISE(ch04-shadow-ray): the ray from the surface towards the light, starting where `origin` says, and the t at which it reaches the light
+    crate::toolkit::exercise::solution_begins("ch04-shadow-ray");
     let point = surface.hit.point;
     let light = point + incoming.direction * incoming.distance;
     let start = match origin {
@@ -51,6 +52,7 @@ pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -
 /// `closest_hit`, the first blocker found is enough: we stop there.
 pub fn any_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
     // EXERCISE(ch04-any-hit): is some object that casts shadows hit for t in (t_min, t_max)? Stop at the first one found
+    crate::toolkit::exercise::solution_begins("ch04-any-hit");
     objects
         .iter()
         .filter(|object| object.shadows)
@@ -90,6 +92,7 @@ pub fn light_is_free(
     stats: &mut Stats,
 ) -> bool {
     // EXERCISE(ch04-light-is-free): a light that casts no shadows is free without a ray; otherwise one shadow ray (counted in stats.shadow) decides whether anything stands between the surface and the light
+    crate::toolkit::exercise::solution_begins("ch04-light-is-free");
     if !incoming.casts_shadows {
         return true;
     }

@@ -126,6 +126,7 @@ pub fn trace(
     stats: &mut Stats,
 ) -> Color {
     // EXERCISE(ch05-trace): the background if the ray hits nothing (a path ended by no hit); else the hit's local light plus the light that its secondary rays bring back along this path
+    crate::toolkit::exercise::solution_begins("ch05-trace");
     let Some(hit) = world.closest_hit(ray, 0.0, f32::INFINITY) else {
         stats.ended_no_hit += 1;
         return scene.image.background;
@@ -164,6 +165,7 @@ pub fn follow_secondary_rays(
     stats: &mut Stats,
 ) -> Color {
     // EXERCISE(ch05-recursion): the sum, over the secondary rays that the tracer lets go on one bounce deeper (with the path's weight times the ray's own), of the ray's weight times the colour seen along it; count each ray traced
+    crate::toolkit::exercise::solution_begins("ch05-recursion");
     let mut color = Color::ZERO;
     for secondary in secondary_rays.into_iter().flatten() {
         let next = Path {

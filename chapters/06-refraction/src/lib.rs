@@ -40,6 +40,7 @@ pub struct Split {
 ///    refracted ray T·(1 − R). So the two shares add up to T.
 pub fn split(surface: &Surface, incoming: &Ray) -> Split {
     // EXERCISE(ch06-split): entering or leaving (from the outward normal), the indices on either side, Snell's refracted direction; on total internal reflection everything transmitted is reflected, else the transmitted weight is shared by the Fresnel term (if the material asks for it) between the mirror ray and the refracted one
+    crate::toolkit::exercise::solution_begins("ch06-split");
     let material = surface.material;
     let transparency = Color::splat(material.transparency);
     let d = incoming.direction;

@@ -47,6 +47,7 @@ impl Termination {
 /// equal to `min_weight` is not below it.
 pub fn below_threshold(weight: Color, min_weight: f32) -> bool {
     // EXERCISE(ch07-below-threshold): whether no channel of the weight reaches min_weight
+    crate::toolkit::exercise::solution_begins("ch07-below-threshold");
     weight.max_element() < min_weight
     // END EXERCISE
 }
@@ -74,6 +75,7 @@ impl Whitted for Tracer {
     /// first.
     fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
         // EXERCISE(ch07-may-trace): a ray may go on unless its depth is beyond max_depth or its path's weight is below the threshold; count each path ended by the criterion that ended it (the depth first)
+        crate::toolkit::exercise::solution_begins("ch07-may-trace");
         if depth > self.termination.max_depth {
             stats.ended_max_depth += 1;
             false

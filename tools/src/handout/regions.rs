@@ -25,7 +25,7 @@
 //! In a handout, the solution becomes `todo!("<id>: <hint>")`, which
 //! type-checks wherever a whole body stood, and panics with a message that
 //! names the exercise. The markers stay, so a handout can be handed out
-//! again and `raybook progress` can tell solved exercises from open ones.
+//! again and `workbook progress` can tell solved exercises from open ones.
 //! A file that lost a solution starts with `#![allow(unused)]`: until the
 //! student writes it, its parameters and helpers are unused, and the
 //! warnings would only be noise.

@@ -254,3 +254,70 @@ pub fn replay(check: &Check, chapter: &ChapterEntry, mistake: &Mistake) -> Resul
         Caught::Unnamed
     })
 }
+
+/// Writes the lecture's methods (the `[[lecture]]` solutions) into their
+/// exercises and runs their chapters' tests, which must all pass. An
+/// exercise with several such solutions is tried once with each: round k
+/// takes every exercise's k-th. A line per round says what passed.
+pub fn lectures_pass(check: &Check, root: &Path) -> Result<Vec<String>, String> {
+    let files = mistakes_files(root)?;
+    // rounds[k]: the k-th solution of each exercise that has that many.
+    let mut rounds: Vec<Vec<(&ChapterEntry, &LectureSolution)>> = Vec::new();
+    let mut tried: std::collections::BTreeMap<&str, usize> = Default::default();
+    for (chapter, file) in &files {
+        for solution in &file.lecture {
+            let k = tried.entry(solution.exercise.as_str()).or_default();
+            if rounds.len() == *k {
+                rounds.push(Vec::new());
+            }
+            rounds[*k].push((*chapter, solution));
+            *k += 1;
+        }
+    }
+    let mut lines = Vec::new();
+    for (round, chosen) in rounds.iter().enumerate() {
+        check.write_variant(|r| {
+            let solution = chosen.iter().find(|(_, s)| s.exercise == r.id);
+            solution.map(|(_, s)| s.body.clone())
+        })?;
+        let ids: Vec<&str> = chosen.iter().map(|(_, s)| s.exercise.as_str()).collect();
+        let mut packages: Vec<String> = chosen.iter().map(|(c, _)| c.package()).collect();
+        packages.dedup();
+        for package in &packages {
+            let (ok, output, _) = check.test(package)?;
+            if !ok {
+                return Err(format!(
+                    "{package}: the lecture's method for {ids:?} fails a test:\n{output}"
+                ));
+            }
+        }
+        lines.push(format!(
+            "round {}: the lecture's methods for {} pass every test of {}",
+            round + 1,
+            ids.join(", "),
+            packages.join(", ")
+        ));
+    }
+    Ok(lines)
+}
+
+/// The handout itself, every exercise taken out: every crate and binary
+/// compiles (taking a body out changes no signature, so the tests compile
+/// as they do against the reference).
+pub fn whole_handout_builds(check: &Check) -> Result<(), String> {
+    check.write_variant(|r| Some(r.todo_line()))?;
+    let (ok, output) = check.cargo(&[
+        "build",
+        "--offline",
+        "--workspace",
+        "--lib",
+        "--bins",
+        "--color",
+        "never",
+    ])?;
+    if ok {
+        Ok(())
+    } else {
+        Err(format!("the handout does not compile:\n{output}"))
+    }
+}

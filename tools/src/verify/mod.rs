@@ -1,4 +1,4 @@
-//! `raybook verify CHAPTER IMAGE.png`: checks a picture made by a student's
+//! `workbook verify CHAPTER IMAGE.png`: checks a picture made by a student's
 //! own tracer, in any language, against the chapter's reference picture.
 //!
 //! The reference is the chapter's default scene rendered at 160×120 (the
@@ -24,7 +24,7 @@ pub struct Reference {
 
 /// The reference pictures, built into the binary so that it works from
 /// anywhere; which picture is a chapter's comes from chapters/chapters.toml.
-static SNAPSHOTS: Dir = include_dir!("$CARGO_MANIFEST_DIR/snapshots");
+static SNAPSHOTS: Dir = include_dir!("$CARGO_MANIFEST_DIR/../snapshots");
 
 impl Reference {
     /// How to render the same picture with the workbook's own binary.
@@ -107,7 +107,7 @@ pub fn verify(reference: &Reference, image: &Path, diff: &Path) -> Result<Outcom
     Ok(Outcome { verdict, diff })
 }
 
-/// `raybook verify`: checks your own tracer's picture against a chapter's reference.
+/// `workbook verify`: checks your own tracer's picture against a chapter's reference.
 #[derive(clap::Args, Debug, Clone)]
 pub struct VerifyArgs {
     /// The chapter: its number (3), folder (03-lambert) or package (ch03-lambert).
@@ -123,7 +123,7 @@ pub struct VerifyArgs {
     pub diff: Option<PathBuf>,
 }
 
-/// Runs `raybook verify`: exit code 0 when the picture passes.
+/// Runs `workbook verify`: exit code 0 when the picture passes.
 pub fn main(args: &VerifyArgs) -> ExitCode {
     let Some(reference) = reference(&args.chapter) else {
         let names: Vec<&str> = references()

@@ -1,4 +1,4 @@
-//! `raybook handout DIR`: a copy of the workbook with the exercises taken out.
+//! `workbook handout DIR`: a copy of the workbook with the exercises taken out.
 //!
 //! The chapters mark the code a student writes as exercise regions (see
 //! [`regions`]); a handout is the workspace with each region's body replaced
@@ -6,6 +6,7 @@
 
 pub mod check;
 mod regions;
+pub mod take_out;
 mod workspace;
 
 use std::path::{Path, PathBuf};
@@ -18,7 +19,7 @@ pub use workspace::{
     write_tree_with,
 };
 
-/// `raybook handout DIR`: writes the workbook with its exercises taken out.
+/// `workbook handout DIR`: writes the workbook with its exercises taken out.
 #[derive(clap::Args, Debug, Clone)]
 #[command(group = clap::ArgGroup::new("what").required(true))]
 pub struct HandoutArgs {
@@ -27,18 +28,28 @@ pub struct HandoutArgs {
     #[arg(group = "what")]
     pub dir: Option<PathBuf>,
 
-    /// The maintainers' check instead: write each classic mistake of the
-    /// chapters' mistakes.toml into its exercise, run the chapter's tests,
-    /// and show which mistakes the tests catch. Fails if one goes unnoticed.
+    /// The maintainers' check that needs a second build of the workbook
+    /// (in target/handout-check): the lecture's own methods (the
+    /// `[[lecture]]` solutions of the chapters' mistakes.toml) pass every
+    /// test of their chapters, and the whole handout compiles. That each
+    /// exercise makes a test fail is part of `cargo test`.
+    #[arg(long, group = "what")]
+    pub check: bool,
+
+    /// The maintainers' check of the tests: write each classic mistake of
+    /// the chapters' mistakes.toml into its exercise, run the chapter's
+    /// tests, and show which mistakes the tests catch. Fails if one goes
+    /// unnoticed.
     #[arg(long, group = "what")]
     pub check_mistakes: bool,
 }
 
-/// Runs `raybook handout`.
+/// Runs `workbook handout`.
 pub fn main(args: &HandoutArgs) -> ExitCode {
     let result = match &args.dir {
-        Some(dir) if !args.check_mistakes => write_handout(dir),
-        _ => check_mistakes(),
+        Some(dir) => write_handout(dir),
+        None if args.check => check_handout(),
+        None => check_mistakes(),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -74,10 +85,22 @@ fn write_handout(dir: &Path) -> Result<(), String> {
         println!("  {:<20} {}:{line}", region.id, file.display());
     }
     println!(
-        "\nnext: cd {} && cargo run --release -- progress\n      \
+        "\nnext: cd {} && cargo run -q -p workbook -- progress\n      \
          then read chapters/01-rays/README.md and write the exercises of chapter 1",
         dir.display()
     );
+    Ok(())
+}
+
+/// The lecture's methods pass and the whole handout compiles.
+fn check_handout() -> Result<(), String> {
+    let root = current_workspace()?;
+    let check = Check::new(&root)?;
+    for line in check::lectures_pass(&check, &root)? {
+        println!("{line}");
+    }
+    check::whole_handout_builds(&check)?;
+    println!("the whole handout compiles");
     Ok(())
 }
 

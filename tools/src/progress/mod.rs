@@ -1,4 +1,4 @@
-//! `raybook progress`: where a student is in the workbook.
+//! `workbook progress`: where a student is in the workbook.
 //!
 //! Runs each chapter's tests in order (`cargo test -p chNN-name
 //! --no-fail-fast`), reads what libtest prints, and shows a table: the
@@ -9,10 +9,11 @@
 //! them anyway. The last line says what to do next.
 //!
 //! It works the same in the reference workspace (every chapter passes) and in
-//! a handout from `raybook handout`.
+//! a handout from `workbook handout`.
 
 mod parse;
 mod report;
+mod watch;
 
 use std::path::Path;
 use std::process::{Command, ExitCode};
@@ -23,12 +24,17 @@ pub use report::{ChapterResult, report};
 use crate::handout::{current_workspace, workspace_regions};
 use crate::toolkit::chapters::{self, ChapterEntry};
 
-/// `raybook progress`: runs each chapter's tests in order and shows where you are.
+/// `workbook progress`: runs each chapter's tests in order and shows where you are.
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct ProgressArgs {
     /// Run every chapter, not only those up to the first that fails.
     #[arg(long)]
     pub all: bool,
+
+    /// Keep running: clear the screen and show the table again on every
+    /// save of a .rs or .toml file under chapters/. Ctrl-C stops.
+    #[arg(long)]
+    pub watch: bool,
 }
 
 /// Runs the tests of one chapter with cargo, from the workspace root, and
@@ -61,9 +67,14 @@ pub fn run_chapter(root: &Path, chapter: &ChapterEntry) -> Result<TestOutput, St
     Ok(parsed)
 }
 
-/// Runs `raybook progress`.
+/// Runs `workbook progress`.
 pub fn main(args: &ProgressArgs) -> ExitCode {
-    match progress(args) {
+    let result = if args.watch {
+        current_workspace().and_then(|root| watch::watch(&root, || progress(args)).map(|()| true))
+    } else {
+        progress(args)
+    };
+    match result {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::FAILURE,
         Err(e) => {

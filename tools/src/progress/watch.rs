@@ -1,0 +1,72 @@
+//! `workbook progress --watch`: progress again on every save.
+//!
+//! Watches the chapters' sources (`chapters/`) with the notify crate. Each
+//! save of a `.rs` or `.toml` file clears the screen and shows the table
+//! and the next exercise again. Saves that come together (an editor writes
+//! a file in several steps, a formatter touches many) make one run.
+//! Ctrl-C ends it: nothing is left behind, the terminal is as it was.
+
+use std::io::IsTerminal;
+use std::path::Path;
+use std::sync::mpsc;
+use std::time::Duration;
+
+use notify::{EventKind, RecursiveMode, Watcher};
+
+/// How long after a save to wait for the saves that come with it.
+const SETTLE: Duration = Duration::from_millis(300);
+
+/// Runs `progress` (which prints its table and tells whether everything
+/// passed) now and after every save of a source file under `root`.
+pub fn watch(
+    root: &Path,
+    mut progress: impl FnMut() -> Result<bool, String>,
+) -> Result<(), String> {
+    let (saved, saves) = mpsc::channel();
+    let mut watcher = notify::recommended_watcher(move |event: notify::Result<notify::Event>| {
+        if let Ok(event) = event
+            && is_a_save(&event)
+        {
+            let _ = saved.send(());
+        }
+    })
+    .map_err(|e| format!("cannot watch files: {e}"))?;
+    let chapters = root.join("chapters");
+    watcher
+        .watch(&chapters, RecursiveMode::Recursive)
+        .map_err(|e| format!("cannot watch {}: {e}", chapters.display()))?;
+    loop {
+        clear_screen();
+        let all_passed = progress()?;
+        if all_passed {
+            println!("\nEvery chapter passes. Keep editing: this runs again on every save.");
+        }
+        println!("watching chapters/ for saves (Ctrl-C to stop)");
+        // One save, then the ones that come with it.
+        saves
+            .recv()
+            .map_err(|_| "the file watcher stopped".to_owned())?;
+        while saves.recv_timeout(SETTLE).is_ok() {}
+    }
+}
+
+/// Is this a change to a Rust source or a TOML file (not an editor's
+/// swap file, not a mere read)?
+fn is_a_save(event: &notify::Event) -> bool {
+    let changes = matches!(
+        event.kind,
+        EventKind::Create(_) | EventKind::Modify(_) | EventKind::Remove(_)
+    );
+    let sources = event
+        .paths
+        .iter()
+        .any(|p| p.extension().is_some_and(|e| e == "rs" || e == "toml"));
+    changes && sources
+}
+
+/// Clears the terminal, if it is one (a pipe keeps every run).
+fn clear_screen() {
+    if std::io::stdout().is_terminal() {
+        print!("\x1b[2J\x1b[H");
+    }
+}
