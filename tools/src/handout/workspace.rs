@@ -188,7 +188,9 @@ mod tests {
 
     #[test]
     fn the_workspace_root_is_found_from_below() {
-        let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+        // This crate lives in tools/, one folder below the workspace root.
+        let here = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let here = here.canonicalize().unwrap();
         let root = workspace_root(&here.join("chapters/03-lambert/src")).unwrap();
         assert_eq!(root, here);
         assert!(workspace_root(&std::env::temp_dir()).is_err());

@@ -37,11 +37,8 @@ pub fn watch(
         .map_err(|e| format!("cannot watch {}: {e}", chapters.display()))?;
     loop {
         clear_screen();
-        let all_passed = progress()?;
-        if all_passed {
-            println!("\nEvery chapter passes. Keep editing: this runs again on every save.");
-        }
-        println!("watching chapters/ for saves (Ctrl-C to stop)");
+        progress()?;
+        println!("\nwatching chapters/ for saves (Ctrl-C to stop)");
         // One save, then the ones that come with it.
         saves
             .recv()

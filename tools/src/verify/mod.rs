@@ -3,6 +3,14 @@
 //!
 //! The reference is the chapter's default scene rendered at 160×120 (the
 //! snapshot size); the comparison is the snapshot tolerance of every test.
+//! A failing picture is diagnosed ([`diagnose`]): the usual mistake that
+//! explains it is named with its fix, or else the region where it differs
+//! and the objects the reference shows there ([`objects`]).
+
+mod advice;
+pub mod diagnose;
+pub mod objects;
+pub mod region;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -12,6 +20,8 @@ use include_dir::{Dir, include_dir};
 use crate::toolkit::chapters::{self, ChapterEntry, VerifyReference};
 use crate::toolkit::compare::{Tolerance, Verdict, compare, diff_image};
 use crate::toolkit::image::{encode_png, write_atomically};
+pub use diagnose::{Corner, Diagnosis, Mistake, Swap, diagnose};
+pub use objects::{ObjectMap, ObjectName, shape_name};
 
 /// A chapter's reference picture for its default scene.
 #[derive(Debug, Clone, Copy)]
@@ -20,6 +30,9 @@ pub struct Reference {
     pub chapter: &'static ChapterEntry,
     /// The reference picture, `snapshots/<folder>/<snapshot>.snap.png`.
     pub png: &'static [u8],
+    /// Which object each pixel of the reference shows,
+    /// `snapshots/<folder>/<snapshot>.objects.txt`, if there is one.
+    pub objects: Option<&'static str>,
 }
 
 /// The reference pictures, built into the binary so that it works from
@@ -40,6 +53,21 @@ impl Reference {
         command
     }
 
+    /// Where the object map of this reference lives, under snapshots/.
+    pub fn objects_path(&self) -> String {
+        format!(
+            "{}/{}.objects.txt",
+            self.chapter.folder,
+            self.verify().snapshot
+        )
+    }
+
+    /// The object map, if there is one and it can be read (tests/verify.rs
+    /// checks that every reference has a current one).
+    pub fn object_map(&self) -> Option<ObjectMap> {
+        ObjectMap::parse(self.objects?).ok()
+    }
+
     fn verify(&self) -> &'static VerifyReference {
         self.chapter
             .verify
@@ -58,9 +86,11 @@ pub fn references() -> Vec<Reference> {
             let file = SNAPSHOTS
                 .get_file(&path)
                 .unwrap_or_else(|| panic!("snapshots/{path}, named in chapters.toml, is missing"));
+            let objects = format!("{}/{}.objects.txt", chapter.folder, verify.snapshot);
             Some(Reference {
                 chapter,
                 png: file.contents(),
+                objects: SNAPSHOTS.get_file(&objects).and_then(|f| f.contents_utf8()),
             })
         })
         .collect()
@@ -82,6 +112,9 @@ pub struct Outcome {
     pub verdict: Verdict,
     /// Where the three-panel diff (reference | mask | yours) was written.
     pub diff: Option<PathBuf>,
+    /// For a failing picture: the usual mistake that explains it, or where
+    /// it differs.
+    pub diagnosis: Option<Diagnosis>,
 }
 
 /// Compares the PNG at `image` with the chapter's reference and writes a
@@ -104,7 +137,16 @@ pub fn verify(reference: &Reference, image: &Path, diff: &Path) -> Result<Outcom
             Some(diff.to_owned())
         }
     };
-    Ok(Outcome { verdict, diff })
+    let diagnosis = if verdict.passed() {
+        None
+    } else {
+        diagnose(&expected, &actual, reference.object_map().as_ref())
+    };
+    Ok(Outcome {
+        verdict,
+        diff,
+        diagnosis,
+    })
 }
 
 /// `workbook verify`: checks your own tracer's picture against a chapter's reference.
@@ -150,6 +192,8 @@ pub fn main(args: &VerifyArgs) -> ExitCode {
     }
 }
 
+/// Prints the verdict, where the diff is, and for a failing picture what to
+/// render instead and what is probably wrong.
 fn report(reference: &Reference, outcome: &Outcome) -> ExitCode {
     let passed = outcome.verdict.passed();
     println!(
@@ -168,6 +212,9 @@ fn report(reference: &Reference, outcome: &Outcome) -> ExitCode {
             expected.1,
             reference.command()
         );
+    }
+    if let Some(diagnosis) = &outcome.diagnosis {
+        println!("{diagnosis}");
     }
     if passed {
         ExitCode::SUCCESS
