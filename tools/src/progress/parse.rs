@@ -14,6 +14,9 @@ pub struct TestOutput {
     pub snapshots: Vec<(String, Option<String>)>,
     /// Exercise ids named by `todo!` panics (`not yet implemented: chNN-...:`).
     pub todos: Vec<String>,
+    /// Each failed test's panic: the test and what it said (the message's
+    /// first line, and an assertion's `left:` and `right:`), by test name.
+    pub panics: Vec<(String, String)>,
     /// The first compile error, if the code does not build.
     pub compile_error: Option<String>,
 }
@@ -33,6 +36,7 @@ impl TestOutput {
 /// * `snapshot 03-lambert/default differs from its reference: ...`, followed
 ///   by `  diff (expected | mask | actual): PATH` (see `toolkit::snapshot`);
 /// * `not yet implemented: ch03-lambert: hint` from a handout's `todo!`;
+/// * `thread 'name' (id) panicked at file:line:col:` and the message below it;
 /// * `error[E0308]: mismatched types` or `error: could not compile` from cargo.
 pub fn parse(output: &str) -> TestOutput {
     let mut parsed = TestOutput::default();
@@ -65,6 +69,12 @@ pub fn parse(output: &str) -> TestOutput {
             if !parsed.snapshots.iter().any(|(n, _)| n == name) {
                 parsed.snapshots.push((name.to_owned(), diff));
             }
+        } else if let Some(test) = panicking_test(line) {
+            let message = panic_message(&mut lines);
+            if !parsed.panics.iter().any(|(t, _)| t == test) {
+                parsed.panics.push((test.to_owned(), message));
+                parsed.panics.sort();
+            }
         } else if let Some((_, rest)) = line.split_once("not yet implemented: ") {
             let id = rest.split(':').next().unwrap_or("").trim();
             if id.starts_with("ch") && !parsed.todos.iter().any(|t| t == id) {
@@ -77,6 +87,39 @@ pub fn parse(output: &str) -> TestOutput {
         }
     }
     parsed
+}
+
+/// The test of a line `thread 'name' (id) panicked at file:line:col:`
+/// (libtest names each test's thread after it).
+fn panicking_test(line: &str) -> Option<&str> {
+    let rest = line.strip_prefix("thread '")?;
+    let (name, after) = rest.split_once('\'')?;
+    after.contains(" panicked at ").then_some(name)
+}
+
+/// The panic message after its `panicked at` line: the first line, and
+/// for a failed `assert_eq!` its `left:` and `right:` lines, joined. The
+/// lines read are consumed, except a `not yet implemented` one, which the
+/// caller reads as a todo.
+fn panic_message(lines: &mut std::iter::Peekable<std::str::Lines>) -> String {
+    let Some(first) = lines.peek().map(|l| l.trim().to_owned()) else {
+        return String::new();
+    };
+    if first.starts_with("not yet implemented: ") {
+        return first;
+    }
+    lines.next();
+    let mut message = first;
+    while let Some(side) = lines
+        .peek()
+        .map(|l| l.trim())
+        .filter(|l| l.starts_with("left:") || l.starts_with("right:"))
+    {
+        message.push_str("; ");
+        message.push_str(side);
+        lines.next();
+    }
+    message
 }
 
 /// The number before `word` in `3 passed; 2 failed; ...`.
@@ -148,8 +191,32 @@ test result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; fini
             )]
         );
         assert_eq!(parsed.todos, ["ch03-lambert"]);
+        assert_eq!(
+            parsed.panics,
+            [(
+                "cosine_law_head_on_versus_sixty_degrees".to_owned(),
+                "not yet implemented: ch03-lambert: albedo × radiance × max(0, n·l)".to_owned()
+            )]
+        );
         assert_eq!(parsed.compile_error, None);
         assert!(!parsed.passed_all());
+    }
+
+    #[test]
+    fn a_failed_assertion_is_read_with_its_sides() {
+        let output = "thread 'the_lectures_worked_example' (1740) panicked at tests/chapter02.rs:60:5:\n\
+                      assertion `left == right` failed: t² − 4t + 3 = 0 has the roots 1 and 3\n  \
+                      left: Some((0.5, 1.5))\n right: Some((1.0, 3.0))\nstack backtrace:\n";
+        let parsed = parse(output);
+        assert_eq!(
+            parsed.panics,
+            [(
+                "the_lectures_worked_example".to_owned(),
+                "assertion `left == right` failed: t² − 4t + 3 = 0 has the roots 1 and 3; \
+                 left: Some((0.5, 1.5)); right: Some((1.0, 3.0))"
+                    .to_owned()
+            )]
+        );
     }
 
     #[test]

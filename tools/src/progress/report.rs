@@ -113,21 +113,21 @@ pub fn report(results: &[ChapterResult], root: &Path) -> String {
 /// The advice of the last line.
 fn next_step(results: &[ChapterResult], here: Option<usize>) -> String {
     let Some(i) = here else {
-        return "next: every chapter passes: you have written a ray tracer. Render a scene \
-                of your own (`cargo run --release -p ch07-termination -- my.toml`), \
-                read chapter 8 (a BVH for big scenes) and \"Where ray tracing goes next\" \
-                at the end of chapters/07-termination/README.md."
+        return "next: every chapter passes: you have written a ray tracer. Try the \
+                Extend and Explore exercises at the end of each chapter's README, render \
+                a scene of your own (`cargo run --release -p ch07-termination -- my.toml`) \
+                and read \"Where ray tracing goes next\" in chapters/07-termination/README.md."
             .to_owned();
     };
     let row = &results[i];
     let chapter = row.chapter;
     let readme = format!("chapters/{}/README.md", chapter.folder);
-    let test = format!("cargo test -p {}", chapter.package());
+    let command = format!("cargo test -p {}", chapter.package());
     let output = row.output.as_ref().expect("a failing row was run");
     let open: Vec<_> = row.open_exercises().collect();
     if let Some(error) = &output.compile_error {
         return format!(
-            "next: chapter {} does not compile ({error}); run `{test}` to see the whole message",
+            "next: chapter {} does not compile ({error}); run `{command}` to see the whole message",
             chapter.number()
         );
     }
@@ -139,22 +139,34 @@ fn next_step(results: &[ChapterResult], here: Option<usize>) -> String {
     match named.or(open.first()) {
         Some((file, line, region)) => format!(
             "next: chapter {}: exercise {} in {}:{line}: {}\n      \
-             read {readme}, write it, then run `{test}`",
+             read {readme}, write it, then run `{command}`",
             chapter.number(),
             region.id,
             file.display(),
             region.hint
         ),
         None => {
-            let what = match output.snapshots.first() {
-                Some((name, _)) => format!("the snapshot {name} differs"),
-                None => match output.failed_tests.first() {
+            // A test's own message says most; a picture's diff comes next.
+            let told = output
+                .panics
+                .iter()
+                .find(|(test, _)| !test.starts_with("snapshot"));
+            let what = match (told, output.snapshots.first()) {
+                (Some((test, message)), _) => {
+                    return format!(
+                        "next: chapter {}: the test {test} fails:\n      {message}\n      \
+                         run `{command}` and compare with {readme}",
+                        chapter.number()
+                    );
+                }
+                (None, Some((name, _))) => format!("the snapshot {name} differs"),
+                (None, None) => match output.failed_tests.first() {
                     Some(test) => format!("the test {test} fails"),
                     None => "no test ran".to_owned(),
                 },
             };
             format!(
-                "next: chapter {}: {what}; run `{test}` and compare with {readme}",
+                "next: chapter {}: {what}; run `{command}` and compare with {readme}",
                 chapter.number()
             )
         }
@@ -226,5 +238,24 @@ mod tests {
         assert!(text.contains("1/1"), "{text}");
         assert!(!text.contains('→'));
         assert!(text.contains("next: every chapter passes"));
+    }
+
+    #[test]
+    fn a_written_exercise_that_fails_is_explained_by_its_tests_message() {
+        let failing = "thread 'the_lectures_worked_example' (7) panicked at tests/chapter02.rs:60:5:\n\
+                       assertion `left == right` failed: the roots are 1 and 3\n  \
+                       left: None\n right: Some((1.0, 3.0))\n\
+                       test result: FAILED. 3 passed; 1 failed; 0 ignored\n";
+        let written = "    // EXERCISE(ch02-sphere): x\n    None\n    // END EXERCISE\n";
+        let rows = [row("02-hits", Some(failing), written)];
+        let text = report(&rows, Path::new("/w"));
+        assert!(
+            text.contains(
+                "next: chapter 2: the test the_lectures_worked_example fails:\n      \
+                 assertion `left == right` failed: the roots are 1 and 3; left: None; \
+                 right: Some((1.0, 3.0))\n      run `cargo test -p ch02-hits`"
+            ),
+            "{text}"
+        );
     }
 }
