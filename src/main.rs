@@ -3,7 +3,9 @@
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use raybook::toolkit::cli::{RenderArgs, run};
+use raybook::toolkit::Scene;
+use raybook::toolkit::cli::{Pixel, RenderArgs, run_or_explain};
+use raybook::toolkit::ray_tree::{RayNode, TracerInfo};
 use raybook::{CHAPTER, render};
 
 /// raybook: a step-by-step ray tracer. Without a command, renders the
@@ -42,7 +44,7 @@ enum Command {
 fn main() -> ExitCode {
     raybook::toolkit::cli::end_quietly_when_output_closes();
     match Cli::parse().command {
-        Some(Command::Render(args)) => run(&CHAPTER, &args, |scene, on_row| render(scene, on_row)),
+        Some(Command::Render(args)) => render_or_explain(&args),
         Some(Command::Bench(args)) => raybook::bench::run(&args),
         Some(Command::Accuracy(args)) => raybook::accuracy::main(&args),
         Some(Command::Verify(args)) => raybook::verify::main(&args),
@@ -53,7 +55,23 @@ fn main() -> ExitCode {
                 output: Some("raybook.png".into()),
                 ..RenderArgs::default()
             };
-            run(&CHAPTER, &args, |scene, on_row| render(scene, on_row))
+            render_or_explain(&args)
         }
     }
+}
+
+/// Renders with the complete tracer, or with `--pixel X,Y` prints that
+/// pixel's ray tree as chapter 8 traces it (the complete tracer's rays).
+fn render_or_explain(args: &RenderArgs) -> ExitCode {
+    run_or_explain(
+        &CHAPTER,
+        args,
+        |scene, on_row| render(scene, on_row),
+        explain,
+    )
+}
+
+fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
+    let termination = raybook::tracer::Termination::of(scene);
+    ch08_bvh::ray_tree::explain(scene, termination, pixel)
 }

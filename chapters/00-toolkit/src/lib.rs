@@ -5,6 +5,7 @@ pub mod cli;
 pub mod compare;
 pub mod exercise;
 pub mod image;
+pub mod ray_tree;
 pub mod scene;
 pub mod snapshot;
 pub mod stats;

@@ -1,5 +1,7 @@
 #![doc = include_str!("../README.md")]
 
+pub mod ray_tree;
+
 pub use ch00_toolkit as toolkit;
 use ch00_toolkit::scene::CameraSpec;
 use ch00_toolkit::{Color, Image, Scene, Stats, Vec3};

@@ -1,7 +1,7 @@
 //! Renders what the camera sees of an empty world: one ray per pixel.
 
-use ch01_rays::toolkit::cli::{RenderArgs, run};
-use ch01_rays::{CHAPTER, render_sky};
+use ch01_rays::toolkit::cli::{RenderArgs, run_or_explain};
+use ch01_rays::{CHAPTER, ray_tree, render_sky};
 use clap::Parser;
 
 /// Chapter 1: rays and a pinhole camera. Casts one ray per pixel, backwards
@@ -16,7 +16,10 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    run(&CHAPTER, &args.render, |scene, on_row| {
-        render_sky(scene, on_row)
-    })
+    run_or_explain(
+        &CHAPTER,
+        &args.render,
+        |scene, on_row| render_sky(scene, on_row),
+        ray_tree::explain,
+    )
 }

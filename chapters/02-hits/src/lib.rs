@@ -4,6 +4,8 @@ mod plane;
 mod sphere;
 mod triangle;
 
+pub mod ray_tree;
+
 pub use ch01_rays::{Camera, Ray, render, toolkit};
 pub use plane::{intersect_plane, plane_point};
 pub use sphere::{intersect_sphere, sphere_point, sphere_roots, sphere_roots_abc};

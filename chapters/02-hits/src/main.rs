@@ -1,7 +1,7 @@
 //! Renders the closest hit of every pixel's ray, flat, as normals or as depth.
 
-use ch02_hits::toolkit::cli::{RenderArgs, run};
-use ch02_hits::{CHAPTER, View, render_hits};
+use ch02_hits::toolkit::cli::{RenderArgs, run_or_explain};
+use ch02_hits::{CHAPTER, View, ray_tree, render_hits};
 use clap::Parser;
 
 /// Chapter 2: ray-plane, ray-sphere and ray-triangle intersection. Finds the
@@ -20,7 +20,10 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    run(&CHAPTER, &args.render, |scene, on_row| {
-        render_hits(scene, args.view, on_row)
-    })
+    run_or_explain(
+        &CHAPTER,
+        &args.render,
+        |scene, on_row| render_hits(scene, args.view, on_row),
+        |scene, pixel| ray_tree::explain(scene, args.view, pixel),
+    )
 }

@@ -2,6 +2,8 @@
 
 mod lights;
 
+pub mod ray_tree;
+
 pub use ch02_hits::{Camera, Hit, Ray, closest_hit, intersect, render, toolkit};
 pub use lights::{Arrival, Incoming, arrival, spot_factor};
 

@@ -1,7 +1,7 @@
 //! Renders a scene with Lambert shading: ambient, point and spot lights.
 
-use ch03_lambert::toolkit::cli::{RenderArgs, run};
-use ch03_lambert::{CHAPTER, render_lambert};
+use ch03_lambert::toolkit::cli::{RenderArgs, run_or_explain};
+use ch03_lambert::{CHAPTER, ray_tree, render_lambert};
 use clap::Parser;
 
 /// Chapter 3: Lambert shading. Each hit is lit by every light as if nothing
@@ -16,7 +16,10 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    run(&CHAPTER, &args.render, |scene, on_row| {
-        render_lambert(scene, on_row)
-    })
+    run_or_explain(
+        &CHAPTER,
+        &args.render,
+        |scene, on_row| render_lambert(scene, on_row),
+        ray_tree::explain,
+    )
 }

@@ -2,6 +2,8 @@
 
 mod offset;
 
+pub mod ray_tree;
+
 pub use ch03_lambert::{
     Camera, Hit, Incoming, Ray, Surface, closest_hit, direct_light, intersect, lambert, render,
     toolkit,

@@ -1,7 +1,7 @@
 //! Renders a scene with Lambert shading and shadow rays.
 
-use ch04_shadows::toolkit::cli::{RenderArgs, run};
-use ch04_shadows::{CHAPTER, ShadowStart, render_shadows};
+use ch04_shadows::toolkit::cli::{RenderArgs, run_or_explain};
+use ch04_shadows::{CHAPTER, ShadowStart, ray_tree, render_shadows};
 use clap::Parser;
 
 /// Chapter 4: shadow rays. Before a light adds to a point, a ray from the
@@ -25,7 +25,10 @@ fn main() -> std::process::ExitCode {
     } else {
         ShadowStart::Offset
     };
-    run(&CHAPTER, &args.render, |scene, on_row| {
-        render_shadows(scene, origin, on_row)
-    })
+    run_or_explain(
+        &CHAPTER,
+        &args.render,
+        |scene, on_row| render_shadows(scene, origin, on_row),
+        |scene, pixel| ray_tree::explain(scene, pixel, origin),
+    )
 }

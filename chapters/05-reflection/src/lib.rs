@@ -2,6 +2,8 @@
 
 mod mirror;
 
+pub mod ray_tree;
+
 pub use ch04_shadows::{
     Camera, Hit, Incoming, Ray, ShadowStart, Surface, World, any_hit, closest_hit, lambert,
     offset_origin, render, shade, toolkit,

@@ -1,7 +1,7 @@
 //! Renders a scene with mirrors, highlights, shadows and Lambert shading.
 
-use ch05_reflection::toolkit::cli::{RenderArgs, run};
-use ch05_reflection::{CHAPTER, render_mirrors};
+use ch05_reflection::toolkit::cli::{RenderArgs, run_or_explain};
+use ch05_reflection::{CHAPTER, ray_tree, render_mirrors};
 use clap::Parser;
 
 /// Chapter 5: specular reflection. At a mirror, the reflected ray
@@ -17,7 +17,10 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    run(&CHAPTER, &args.render, |scene, on_row| {
-        render_mirrors(scene, on_row)
-    })
+    run_or_explain(
+        &CHAPTER,
+        &args.render,
+        |scene, on_row| render_mirrors(scene, on_row),
+        ray_tree::explain,
+    )
 }

@@ -2,6 +2,8 @@
 
 mod snell;
 
+pub mod ray_tree;
+
 pub use ch05_reflection::{
     Camera, Hit, Mirrors, Path, Ray, Secondary, SecondaryKind, ShadowStart, Surface, Whitted,
     World, closest_hit, lambert, mirror_ray, offset_origin, reflect, render, render_whitted, shade,

@@ -1,7 +1,7 @@
 //! Renders a scene with glass: refraction, total internal reflection, Fresnel.
 
-use ch06_refraction::toolkit::cli::{RenderArgs, run};
-use ch06_refraction::{CHAPTER, render_glass};
+use ch06_refraction::toolkit::cli::{RenderArgs, run_or_explain};
+use ch06_refraction::{CHAPTER, ray_tree, render_glass};
 use clap::Parser;
 
 /// Chapter 6: refraction. At a transparent material a second ray continues
@@ -18,7 +18,10 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    run(&CHAPTER, &args.render, |scene, on_row| {
-        render_glass(scene, on_row)
-    })
+    run_or_explain(
+        &CHAPTER,
+        &args.render,
+        |scene, on_row| render_glass(scene, on_row),
+        ray_tree::explain,
+    )
 }

@@ -1,5 +1,7 @@
 #![doc = include_str!("../README.md")]
 
+pub mod ray_tree;
+
 pub use ch06_refraction::{
     Camera, Glass, Hit, Mirrors, Path, Ray, Secondary, SecondaryKind, ShadowStart, Surface,
     Whitted, World, closest_hit, lambert, offset_origin, reflect, refract, render, render_whitted,

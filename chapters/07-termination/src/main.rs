@@ -1,7 +1,8 @@
 //! Renders a scene with the complete tracer and explicit termination criteria.
 
-use ch07_termination::toolkit::cli::{RenderArgs, run};
-use ch07_termination::{CHAPTER, Termination, render_terminated};
+use ch07_termination::toolkit::Scene;
+use ch07_termination::toolkit::cli::{RenderArgs, run_or_explain};
+use ch07_termination::{CHAPTER, Termination, ray_tree, render_terminated};
 use clap::Parser;
 
 /// Chapter 7: termination criteria. A path of rays ends when a ray hits
@@ -32,14 +33,23 @@ fn weight(text: &str) -> Result<f32, String> {
     }
 }
 
+impl Args {
+    /// The scene's criteria, with the command line's overrides.
+    fn termination(&self, scene: &Scene) -> Termination {
+        let scene_criteria = Termination::of(scene);
+        Termination {
+            max_depth: self.max_depth.unwrap_or(scene_criteria.max_depth),
+            min_weight: self.min_weight.unwrap_or(scene_criteria.min_weight),
+        }
+    }
+}
+
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    run(&CHAPTER, &args.render, |scene, on_row| {
-        let scene_criteria = Termination::of(scene);
-        let termination = Termination {
-            max_depth: args.max_depth.unwrap_or(scene_criteria.max_depth),
-            min_weight: args.min_weight.unwrap_or(scene_criteria.min_weight),
-        };
-        render_terminated(scene, termination, on_row)
-    })
+    run_or_explain(
+        &CHAPTER,
+        &args.render,
+        |scene, on_row| render_terminated(scene, args.termination(scene), on_row),
+        |scene, pixel| ray_tree::explain(scene, args.termination(scene), pixel),
+    )
 }

@@ -3,6 +3,8 @@
 mod aabb;
 mod build;
 
+pub mod ray_tree;
+
 pub use aabb::{Aabb, bounds};
 pub use ch02_hits::{hit_at, intersect};
 pub use ch07_termination::{

@@ -2,8 +2,9 @@
 
 use std::time::Instant;
 
-use ch08_bvh::toolkit::cli::{RenderArgs, run};
-use ch08_bvh::{Bvh, CHAPTER, Termination, Tracer, render_whitted};
+use ch08_bvh::toolkit::Scene;
+use ch08_bvh::toolkit::cli::{RenderArgs, run_or_explain};
+use ch08_bvh::{Bvh, CHAPTER, Termination, Tracer, ray_tree, render_whitted};
 use clap::Parser;
 
 /// Chapter 8 (bonus): a bounding volume hierarchy. The tracer is chapter
@@ -19,7 +20,7 @@ struct Args {
 
 fn main() -> std::process::ExitCode {
     let args = Args::parse();
-    run(&CHAPTER, &args.render, |scene, on_row| {
+    let render = |scene: &Scene, on_row: &(dyn Fn() + Sync)| {
         let start = Instant::now();
         let bvh = Bvh::build(&scene.objects);
         println!(
@@ -29,5 +30,8 @@ fn main() -> std::process::ExitCode {
         );
         let termination = Termination::of(scene);
         render_whitted(&Tracer { termination }, scene, &bvh, on_row)
+    };
+    run_or_explain(&CHAPTER, &args.render, render, |scene, pixel| {
+        ray_tree::explain(scene, Termination::of(scene), pixel)
     })
 }

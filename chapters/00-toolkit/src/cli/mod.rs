@@ -11,8 +11,14 @@ use std::time::{Duration, Instant};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use crate::chapters::{self, ChapterEntry};
+use crate::ray_tree::{RayNode, TracerInfo};
 use crate::scene::{Effect, Effects};
 use crate::{Image, Scene, SceneError, Stats};
+
+mod pixel;
+
+pub use pixel::Pixel;
+use pixel::{explain_pixel, pixel};
 
 /// A chapter binary: which chapter it is, and its default scene.
 ///
@@ -87,6 +93,22 @@ pub struct RenderArgs {
     /// picture is the same bytes whatever the number.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub threads: Option<u32>,
+
+    /// Instead of rendering, print the rays of the pixel X,Y (counted from
+    /// 0,0 at the top-left corner) as a tree, as this chapter traces them:
+    /// each ray's kind, origin and direction; what it hits (object, t,
+    /// point, normal, front or back); what each light adds and whether a
+    /// shadow ray finds it blocked; the secondary rays with their weights;
+    /// the colour each ray brings back; and why each path ends. It follows
+    /// one ray through the pixel's centre, whatever the samples, and writes
+    /// no PNG.
+    #[arg(long, value_name = "X,Y", value_parser = pixel)]
+    pub pixel: Option<Pixel>,
+
+    /// With --pixel: write the tree as JSON instead of text, to compare with
+    /// your own tracer's (the README's "A pixel's ray tree" has the schema).
+    #[arg(long, requires = "pixel")]
+    pub json: bool,
 }
 
 impl RenderArgs {
@@ -228,7 +250,46 @@ pub fn run(
     render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
 ) -> ExitCode {
     end_quietly_when_output_closes();
+    if args.pixel.is_some() {
+        eprintln!(
+            "error: this binary prints no ray trees; every chapter's binary does, e.g. cargo run -p ch07-termination -- --pixel X,Y"
+        );
+        return ExitCode::FAILURE;
+    }
     run_loaded(chapter, args, args.load_scene(chapter), render)
+}
+
+/// [`run`], or with `--pixel X,Y` the pixel's ray tree instead of a
+/// picture: `explain(scene, pixel)` traces the pixel's ray as the chapter
+/// does and says what its tracer does and what it saw.
+pub fn run_or_explain(
+    chapter: &Chapter,
+    args: &RenderArgs,
+    render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
+    explain: impl Fn(&Scene, Pixel) -> (TracerInfo, RayNode),
+) -> ExitCode {
+    end_quietly_when_output_closes();
+    let loaded = args.load_scene(chapter);
+    match args.pixel {
+        None => run_loaded(chapter, args, loaded, render),
+        Some(pixel) => explain_pixel(chapter, args, loaded, pixel, explain),
+    }
+}
+
+/// The effect plan for a scene and the scene with it applied; prints a note
+/// for each effect left to a later chapter (an error with `--strict`, and
+/// then `None`).
+fn planned(chapter: &Chapter, args: &RenderArgs, scene: Scene) -> Option<(EffectPlan, Scene)> {
+    let plan = EffectPlan::new(chapter, &scene, &args.without);
+    for note in plan.notes() {
+        if args.strict {
+            eprintln!("error: {note}; --strict refuses to render without it");
+            return None;
+        }
+        eprintln!("note: {note}; this chapter renders without it");
+    }
+    let scene = plan.apply(chapter, scene);
+    Some((plan, scene))
 }
 
 /// [`run`] once the scene is loaded (or failed to load): `loaded` is the
@@ -246,16 +307,10 @@ fn run_loaded(
             return ExitCode::FAILURE;
         }
     };
-    let plan = EffectPlan::new(chapter, &scene, &args.without);
-    for note in plan.notes() {
-        if args.strict {
-            eprintln!("error: {note}; --strict refuses to render without it");
-            return ExitCode::FAILURE;
-        }
-        eprintln!("note: {note}; this chapter renders without it");
-    }
+    let Some((plan, scene)) = planned(chapter, args, scene) else {
+        return ExitCode::FAILURE;
+    };
     println!("{plan}");
-    let scene = plan.apply(chapter, scene);
     let bar = progress_bar(scene.image.height, args.quiet);
     // Quick renders show no bar: it appears once a render has taken a second.
     bar.set_draw_target(ProgressDrawTarget::hidden());

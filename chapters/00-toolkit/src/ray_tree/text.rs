@@ -1,0 +1,301 @@
+//! The ray tree as indented text, for people: one block per ray, its
+//! secondary rays indented below it.
+
+use std::fmt::Write;
+
+use super::*;
+
+impl RayTree {
+    /// The tree as indented text, one ray and its hit per block.
+    pub fn to_text(&self) -> String {
+        let mut out = String::new();
+        let [x, y] = self.pixel;
+        let [w, h] = self.image;
+        let _ = writeln!(
+            out,
+            "ray tree of pixel ({x}, {y}) in {w}×{h}, chapter {}, {}: one ray through the pixel's centre (the scene's samples = {} are ignored here)",
+            self.chapter, self.scene, self.samples
+        );
+        let _ = writeln!(out, "{}", self.tracer.describe());
+        write_ray(&mut out, &self.primary, &self.tracer, "eye");
+        out
+    }
+}
+
+impl TracerInfo {
+    /// One line saying what this chapter traces.
+    fn describe(&self) -> String {
+        let mut parts = vec![if self.hits {
+            "closest hit"
+        } else {
+            "no objects (the sky only)"
+        }];
+        if self.lights {
+            parts.push("lights");
+        }
+        if self.shadow_rays {
+            parts.push("shadow rays");
+        }
+        let mut line = format!("this chapter traces: {}", parts.join(", "));
+        if let Some(depth) = self.max_depth {
+            let _ = write!(line, ", secondary rays up to max_depth = {depth} bounces");
+        }
+        if let Some(w) = self.min_weight {
+            let _ = write!(line, ", paths ended below min_weight = {}", num(w));
+        }
+        line
+    }
+}
+
+/// A number for people: at most four decimals, no trailing zeros, no "-0";
+/// three significant digits for a number too small for that (1.23e-5).
+pub fn num(v: f32) -> String {
+    if v != 0.0 && v.abs() < 0.0005 {
+        return format!("{v:.2e}");
+    }
+    let text = format!("{v:.4}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.into()
+    }
+}
+
+/// A vector or colour for people: (x, y, z).
+pub fn vec3(v: [f32; 3]) -> String {
+    format!("({}, {}, {})", num(v[0]), num(v[1]), num(v[2]))
+}
+
+/// Writes one ray's block and, indented below it, its secondary rays.
+/// `path` names the ray by the bounces that lead to it from the eye
+/// (R a reflection, T a refraction), so that a reader knows where in a
+/// deep tree a block is.
+fn write_ray(out: &mut String, ray: &RayNode, tracer: &TracerInfo, path: &str) {
+    let pad = "  ".repeat(ray.depth as usize);
+    let kind = match ray.kind {
+        RayKind::Primary => "primary ray",
+        RayKind::Reflection => "reflection ray",
+        RayKind::Refraction => "refraction ray",
+    };
+    let mut head = format!("{pad}{kind} (depth {}: {path})", ray.depth);
+    if ray.kind != RayKind::Primary {
+        let _ = write!(
+            head,
+            ", weight {}, path weight {}",
+            vec3(ray.weight),
+            vec3(ray.path_weight)
+        );
+    }
+    let _ = writeln!(out, "{head}");
+    let _ = writeln!(
+        out,
+        "{pad}  from {} along {}",
+        vec3(ray.origin),
+        vec3(ray.direction)
+    );
+    if !ray.traced {
+        let why = ray.end.map_or("", end_text);
+        let _ = writeln!(out, "{pad}  not traced: {why}");
+        return;
+    }
+    match &ray.hit {
+        None if !tracer.hits => {
+            let _ = writeln!(out, "{pad}  hits nothing (this chapter has no objects yet)");
+        }
+        None => {
+            let _ = writeln!(
+                out,
+                "{pad}  hits nothing: sees the background; path ended (no hit)"
+            );
+        }
+        Some(hit) => write_hit(out, hit, &pad),
+    }
+    for light in &ray.lights {
+        write_light(out, light, tracer, &pad);
+    }
+    if let Some(local) = ray.local {
+        let _ = writeln!(
+            out,
+            "{pad}  local light (sum of the lights): {}",
+            vec3(local)
+        );
+    }
+    if let Some(split) = &ray.refraction {
+        write_refraction(out, split, &pad);
+    }
+    if ray.end == Some(End::NoSecondaryRays) {
+        let _ = writeln!(
+            out,
+            "{pad}  no secondary rays (neither mirror nor transparent): path ended"
+        );
+    }
+    for next in &ray.secondary {
+        let step = if next.kind == RayKind::Refraction {
+            "T"
+        } else {
+            "R"
+        };
+        write_ray(out, next, tracer, &format!("{path} → {step}"));
+    }
+    write_color(out, ray, &format!("{kind} ({path})"), &pad);
+}
+
+/// The last line of a ray's block: what it brings back, and how.
+/// `name` is the ray's kind and path, as its first line gives them.
+fn write_color(out: &mut String, ray: &RayNode, name: &str, pad: &str) {
+    let Some(color) = ray.color else { return };
+    let what = if ray.kind == RayKind::Primary {
+        format!("{name} brings back the pixel's colour")
+    } else {
+        format!("{name} brings back")
+    };
+    let sum = if ray.secondary.iter().any(|r| r.traced) {
+        " = local + Σ weight × what each secondary ray brings back"
+    } else {
+        ""
+    };
+    let _ = writeln!(out, "{pad}  {what}: {}{sum}", vec3(color));
+}
+
+/// Why a path ended, in words.
+fn end_text(end: End) -> &'static str {
+    match end {
+        End::NoHit => "path ended (no hit)",
+        End::MaxDepth => "path ended (maximum depth: one bounce more than max_depth)",
+        End::WeightThreshold => {
+            "path ended (weight threshold: the path weight is below min_weight in every channel)"
+        }
+        End::NoSecondaryRays => "path ended (no secondary rays)",
+        End::NotTraced => "the tracer did not follow it",
+    }
+}
+
+/// The hit: which object, where, which way the surface faces.
+fn write_hit(out: &mut String, hit: &HitNode, pad: &str) {
+    let side = match hit.side {
+        Side::Front => "front side (d·n < 0)",
+        Side::Back => "back side (d·n > 0)",
+    };
+    let _ = writeln!(
+        out,
+        "{pad}  hit object {} ({}, material {}) at t = {}, {side}",
+        hit.object,
+        hit.shape,
+        hit.material,
+        num(hit.t)
+    );
+    if let Some([t0, t1]) = hit.roots {
+        let _ = writeln!(
+            out,
+            "{pad}    the quadratic's roots: t₀ = {}, t₁ = {} (nearest first){}",
+            num(t0),
+            num(t1),
+            if t0 <= hit.t / 1000.0 {
+                "; t₀ is at or behind the ray's origin, which is on or inside the sphere"
+            } else {
+                ""
+            }
+        );
+    }
+    let _ = writeln!(
+        out,
+        "{pad}    point {}, normal {}, facing normal {}",
+        vec3(hit.point),
+        vec3(hit.normal),
+        vec3(hit.facing_normal)
+    );
+}
+
+/// One light: where it is, whether it is blocked, what it adds.
+fn write_light(out: &mut String, light: &LightNode, tracer: &TracerInfo, pad: &str) {
+    let name = format!("light {} ({})", light.light, light.kind);
+    let cos = light
+        .n_dot_l
+        .map_or(String::new(), |c| format!("n·l = {}, ", num(c)));
+    let status = match light.status {
+        LightStatus::Ambient => {
+            let _ = writeln!(
+                out,
+                "{pad}  {name}: albedo × its colour adds {}",
+                vec3(light.adds)
+            );
+            return;
+        }
+        LightStatus::Dark => "dark here (outside its cone)".to_string(),
+        LightStatus::Behind => "behind the surface: adds nothing, no shadow ray".to_string(),
+        LightStatus::AddsNothing => "would add nothing: no shadow ray".to_string(),
+        LightStatus::Free | LightStatus::Blocked => shadow_text(light, tracer),
+    };
+    let _ = writeln!(out, "{pad}  {name}: {cos}{status}");
+    if matches!(light.status, LightStatus::Dark | LightStatus::Behind) {
+        return; // it adds nothing, as the line says
+    }
+    let terms = match (light.lambert, light.highlight) {
+        (Some(l), Some(h)) => format!("lambert {} + highlight {} → ", vec3(l), vec3(h)),
+        (Some(l), None) => format!("lambert {} → ", vec3(l)),
+        _ => String::new(),
+    };
+    let _ = writeln!(out, "{pad}    {terms}adds {}", vec3(light.adds));
+}
+
+/// Free or blocked, and by what: the shadow ray's verdict.
+fn shadow_text(light: &LightNode, tracer: &TracerInfo) -> String {
+    let Some(shadow) = &light.shadow_ray else {
+        return if !tracer.shadow_rays {
+            "free (this chapter traces no shadow rays)".into()
+        } else if light.casts_shadows == Some(false) {
+            "free (the light casts no shadows: no shadow ray)".into()
+        } else {
+            "free (no shadow ray traced)".into()
+        };
+    };
+    let ray = format!(
+        "shadow ray from {} along {} up to t = {}",
+        vec3(shadow.origin),
+        vec3(shadow.direction),
+        num(shadow.t_max)
+    );
+    match (&shadow.blocked_by, shadow.blocker_t) {
+        (Some(o), Some(t)) => format!(
+            "{ray}: blocked by object {} ({}) at t = {}",
+            o.object,
+            o.shape,
+            num(t)
+        ),
+        _ if shadow.blocked => format!("{ray}: blocked"),
+        _ => format!("{ray}: free"),
+    }
+}
+
+/// How a transparent surface splits the light: Snell, TIR, Fresnel.
+fn write_refraction(out: &mut String, r: &RefractionNode, pad: &str) {
+    let way = if r.entering { "entering" } else { "leaving" };
+    let _ = writeln!(
+        out,
+        "{pad}  transparent: {way} the object, n₁ = {} → n₂ = {}, η = {}, cos θ₁ = {}, sin²θ₂ = η²(1 − cos²θ₁) = {}",
+        num(r.n1),
+        num(r.n2),
+        num(r.eta),
+        num(r.cos_theta1),
+        num(r.sin2_theta2)
+    );
+    let share = if r.total_internal_reflection {
+        format!(
+            "total internal reflection (sin²θ₂ > 1): no refracted ray; the mirror ray gets reflectance + T = {}",
+            vec3(r.reflected_weight)
+        )
+    } else {
+        let fresnel = r.fresnel.map_or("no Fresnel term, R = 0".to_string(), |f| {
+            format!("Schlick's R = {}", num(f))
+        });
+        let refracted = r.refracted_weight.map_or([0.0; 3], |w| w);
+        format!(
+            "T = {}, {fresnel}: mirror ray reflectance + T·R = {}, refracted ray T·(1 − R) = {}",
+            num(r.transparency),
+            vec3(r.reflected_weight),
+            vec3(refracted)
+        )
+    };
+    let _ = writeln!(out, "{pad}    {share}");
+}

@@ -1,0 +1,33 @@
+//! Chapter 1's ray tree (`--pixel X,Y`): the pixel's primary ray, which
+//! meets nothing in this chapter's empty world and sees the sky.
+
+use crate::toolkit::cli::Pixel;
+use crate::toolkit::ray_tree::{End, RayKind, RayNode, TracerInfo};
+use crate::toolkit::{Scene, Vec3};
+use crate::{Camera, Ray, sky};
+
+/// The ray the tree follows: the scene camera's primary ray through the
+/// pixel's centre (one ray, whatever the scene's samples).
+pub fn primary_ray(scene: &Scene, pixel: Pixel) -> Ray {
+    let camera = Camera::new(&scene.camera, scene.image.width, scene.image.height);
+    camera.primary_ray(pixel.x, pixel.y)
+}
+
+/// A tree node for `ray`, not yet followed.
+pub fn ray_node(kind: RayKind, depth: u32, ray: &Ray) -> RayNode {
+    RayNode::new(kind, depth, ray.origin, ray.direction)
+}
+
+/// Chapter 1's tree: the primary ray and the sky colour it sees.
+pub fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
+    let ray = primary_ray(scene, pixel);
+    let mut node = ray_node(RayKind::Primary, 0, &ray);
+    node.end = Some(End::NoHit);
+    node.color = Some(sky(&ray).to_array());
+    (TracerInfo::default(), node)
+}
+
+/// A colour (or vector) as the tree stores it.
+pub fn rgb(v: Vec3) -> [f32; 3] {
+    v.to_array()
+}

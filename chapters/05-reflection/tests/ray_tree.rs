@@ -1,0 +1,103 @@
+//! `--pixel X,Y --json`: mirror rays, their weights, and the depth limit.
+
+use std::process::Command;
+
+use serde_json::{Value, json};
+
+/// Two facing mirrors, z = −1 and z = 1, with the eye between them looking
+/// at one: the mirror rays bounce back and forth until max_depth = 3.
+/// Each mirror is grey (0.2, lit by an ambient light of 1) and reflects half.
+const FACING_MIRRORS: &str = r#"
+[camera]
+eye = [0.0, 0.0, 0.0]
+look_at = [0.0, 0.0, -1.0]
+up = [0.0, 1.0, 0.0]
+vfov = 30.0
+
+[image]
+width = 3
+height = 3
+
+[trace]
+max_depth = 3
+
+[materials.mirror]
+color = [0.2, 0.2, 0.2]
+reflectance = [0.5, 0.5, 0.5]
+
+[[lights]]
+type = "ambient"
+color = [1.0, 1.0, 1.0]
+
+[[objects]]
+type = "plane"
+normal = [0.0, 0.0, 1.0]
+offset = 1.0
+material = "mirror"
+
+[[objects]]
+type = "plane"
+normal = [0.0, 0.0, -1.0]
+offset = 1.0
+material = "mirror"
+"#;
+
+fn tree() -> Value {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("mirrors.toml");
+    std::fs::write(&scene, FACING_MIRRORS).unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_ch05-reflection"))
+        .arg(&scene)
+        .args(["--pixel", "1,1", "--json"])
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    serde_json::from_slice(&output.stdout).unwrap()
+}
+
+fn first(c: &Value) -> f64 {
+    c[0].as_f64().unwrap()
+}
+
+#[test]
+fn mirror_rays_bounce_with_multiplying_weights_until_the_maximum_depth() {
+    let tree = tree();
+    assert_eq!(tree["tracer"]["max_depth"], 3);
+    let mut ray = &tree["primary"];
+    let mut objects = Vec::new();
+    for depth in 1..=4 {
+        objects.push(ray["hit"]["object"].as_u64().unwrap());
+        let secondary = ray["secondary"].as_array().unwrap();
+        assert_eq!(secondary.len(), 1, "one mirror ray at depth {depth}");
+        ray = &secondary[0];
+        assert_eq!(ray["kind"], "reflection");
+        assert_eq!(ray["depth"], depth);
+        assert_eq!(ray["weight"], json!([0.5, 0.5, 0.5]));
+        assert!((first(&ray["path_weight"]) - 0.5f64.powi(depth)).abs() < 1e-6);
+    }
+    assert_eq!(objects, [0, 1, 0, 1], "back and forth between the mirrors");
+    assert_eq!(ray["traced"], false);
+    assert_eq!(ray["end"], "max_depth");
+    assert!(ray["color"].is_null());
+}
+
+#[test]
+fn each_ray_brings_back_its_local_light_plus_half_the_next() {
+    let tree = tree();
+    // 0.2 at depth 3; 0.2 + 0.5 · 0.2 = 0.3 at depth 2; 0.35; 0.375.
+    let mut ray = &tree["primary"];
+    for expected in [0.375, 0.35, 0.3, 0.2] {
+        assert!(
+            (first(&ray["color"]) - expected).abs() < 1e-5,
+            "{}",
+            ray["color"]
+        );
+        assert!((first(&ray["local"]) - 0.2).abs() < 1e-6);
+        assert_eq!(ray["lights"][0]["status"], "ambient");
+        ray = &ray["secondary"][0];
+    }
+}

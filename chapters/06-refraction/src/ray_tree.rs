@@ -1,0 +1,77 @@
+//! Chapter 6's ray tree (`--pixel X,Y`): chapter 5's tree, and at each
+//! transparent surface how the light splits: entering or leaving, the two
+//! indices and η, total internal reflection, Schlick's Fresnel term and the
+//! weights of the mirror and refracted rays.
+
+pub use ch05_reflection::ray_tree::{explain_with, rgb};
+
+use crate::toolkit::cli::Pixel;
+use crate::toolkit::ray_tree::{RayNode, RefractionNode, TracerInfo};
+use crate::toolkit::{Color, Scene};
+use crate::{Glass, Mirrors, Ray, Surface, refract, schlick, split};
+
+/// How `surface` splits the light of `incoming` between the mirror ray and
+/// the refracted ray, for the tree; `None` for an opaque material (which
+/// the chapter does not split). The weights are the chapter's own
+/// [`split`]; the indices and cosines are worked out again beside it, as
+/// the lecture does, to show where they come from.
+pub fn explain_split(surface: &Surface, incoming: &Ray) -> Option<RefractionNode> {
+    let material = surface.material;
+    if material.transparency == 0.0 {
+        return None;
+    }
+    let d = incoming.direction;
+    let entering = d.dot(surface.hit.normal) < 0.0;
+    let (n1, n2) = if entering {
+        (1.0, material.ior)
+    } else {
+        (material.ior, 1.0)
+    };
+    let eta = n1 / n2;
+    let cos_theta1 = -surface.normal.dot(d);
+    let shares = split(surface, incoming);
+    let fresnel = refract(d, surface.normal, eta)
+        .filter(|_| material.fresnel)
+        .map(|out| {
+            let cos_out = -surface.normal.dot(out);
+            schlick(if n1 <= n2 { cos_theta1 } else { cos_out }, n1, n2)
+        });
+    Some(RefractionNode {
+        entering,
+        n1,
+        n2,
+        eta,
+        cos_theta1,
+        sin2_theta2: eta * eta * (1.0 - cos_theta1 * cos_theta1),
+        total_internal_reflection: shares.refracted.is_none(),
+        fresnel,
+        transparency: material.transparency,
+        reflectance: rgb(material.reflectance),
+        reflected_weight: rgb(shares.reflected),
+        refracted_weight: shares.refracted.map(|(w, _): (Color, _)| rgb(w)),
+    })
+}
+
+/// Chapter 6's tree: its glass and mirrors, to the scene's `max_depth`.
+pub fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
+    let tracer = Glass {
+        mirrors: Mirrors {
+            max_depth: scene.trace.max_depth,
+        },
+    };
+    let info = TracerInfo {
+        hits: true,
+        lights: true,
+        shadow_rays: true,
+        max_depth: Some(scene.trace.max_depth),
+        min_weight: None,
+    };
+    explain_with(
+        &tracer,
+        scene,
+        &scene.objects[..],
+        pixel,
+        info,
+        explain_split,
+    )
+}
