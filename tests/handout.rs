@@ -183,7 +183,7 @@ fn raybook_handout_writes_a_copy_and_refuses_a_folder_in_use() {
     );
     let lambert = std::fs::read_to_string(dir.join("chapters/03-lambert/src/lib.rs")).unwrap();
     assert!(lambert.contains("todo!(\"ch03-lambert: "), "{lambert}");
-    assert!(!lambert.contains("surface.material.color * incoming.radiance * cos_theta"));
+    assert!(!lambert.contains("surface.material.color * incoming.irradiance * cos_theta"));
     assert_eq!(
         std::fs::read(dir.join("snapshots/03-lambert/default.snap.png")).unwrap(),
         std::fs::read(root().join("snapshots/03-lambert/default.snap.png")).unwrap(),

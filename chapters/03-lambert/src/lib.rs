@@ -46,7 +46,7 @@ impl<'a> Surface<'a> {
 
 /// Lambert's cosine law, the lecture's I_d = k_d · I_L · cos θ: a matte
 /// surface of albedo k_d (`surface.material.color`) under light that gives
-/// I_L (`incoming.radiance`, the irradiance of a surface facing the light)
+/// I_L (`incoming.irradiance`, the irradiance of a surface facing the light)
 /// sends back k_d · I_L · cos θ, where cos θ = n·l for the unit normal n and
 /// the unit vector l towards the light. Light arriving at angle θ spreads
 /// over 1/cos θ times the area. A light behind the surface (n·l < 0) gives
@@ -55,7 +55,7 @@ pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
     // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light; nothing for light from behind
     crate::toolkit::exercise::solution_begins("ch03-lambert");
     let cos_theta = surface.normal.dot(incoming.direction).max(0.0);
-    surface.material.color * incoming.radiance * cos_theta
+    surface.material.color * incoming.irradiance * cos_theta
     // END EXERCISE
 }
 

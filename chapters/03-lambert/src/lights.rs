@@ -14,9 +14,8 @@ pub struct Incoming {
     /// Colour × intensity / r², times the spot's cone factor: the
     /// *irradiance* the light gives a surface at distance r that faces it
     /// (at normal incidence), per channel; the lecture's I_L. Lambert's law
-    /// multiplies it by cos θ for a surface at angle θ. (Not a radiance:
-    /// the field keeps its old name because later chapters use it.)
-    pub radiance: Color,
+    /// multiplies it by cos θ for a surface at angle θ.
+    pub irradiance: Color,
     /// Does the light cast shadows? (Chapter 4 traces no shadow ray if not.)
     pub casts_shadows: bool,
 }
@@ -72,7 +71,7 @@ pub fn arrival(light: &Light, point: Vec3) -> Arrival {
             if cone == 0.0 {
                 return Arrival::Dark;
             }
-            incoming.radiance *= cone;
+            incoming.irradiance *= cone;
             Arrival::Incoming(incoming)
         }
     }
@@ -88,7 +87,7 @@ fn from_point(position: Vec3, power: Color, casts_shadows: bool, point: Vec3) ->
     Arrival::Incoming(Incoming {
         direction: to_light / distance,
         distance,
-        radiance: power / (distance * distance),
+        irradiance: power / (distance * distance),
         casts_shadows,
     })
 }

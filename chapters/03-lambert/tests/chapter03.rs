@@ -185,7 +185,7 @@ fn lambert_gives_the_cosine_law_and_nothing_from_behind() {
     let from = |direction: Vec3| Incoming {
         direction: direction.normalize(),
         distance: 2.0,
-        radiance: Vec3::new(2.0, 1.0, 0.5),
+        irradiance: Vec3::new(2.0, 1.0, 0.5),
         casts_shadows: true,
     };
     let sixty = lambert(&surface, &from(Vec3::new(3f32.sqrt(), 1.0, 0.0)));

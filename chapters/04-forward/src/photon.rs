@@ -27,7 +27,11 @@
 //!
 //! *What a photon carries.* A light of intensity I sends I per unit solid
 //! angle, 4π·I over the whole sphere. Emitting N photons in uniformly random
-//! directions, each carries the flux Φ = 4π·C·I / N. At its first hit the
+//! directions, each carries the flux Φ = 4π·C·I / N. With several lights,
+//! each photon first picks light k with the probability p_k, its share of
+//! the total power, and carries Φ = 4π·C_k·I_k / (N·p_k): light k gets
+//! N·p_k of the photons, and dividing by p_k gives each light its whole
+//! power whatever its share (the README derives it). At its first hit the
 //! surface keeps (1 − ρ) of it and sends ρΦ off again, in a direction drawn
 //! with density cos θ_o / π about the normal (θ_o from the normal): that is
 //! the diffuse law, which sends radiance equally into all directions.

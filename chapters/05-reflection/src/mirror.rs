@@ -42,13 +42,13 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
 }
 
 /// The highlight of a light on a shiny surface (Blinn–Phong):
-/// specular × radiance × max(0, n·h)^shininess, where h is the unit vector
+/// specular × irradiance × max(0, n·h)^shininess, where h is the unit vector
 /// halfway between the directions to the light and to the eye.
 ///
 /// A mirror ray is a single direction and never hits a point light, which
 /// has no size; the highlight puts the light's reflection back in.
 pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
-    // EXERCISE(ch05-highlight): Blinn–Phong: the specular weight times the light's radiance times the cosine between the normal and the unit halfway vector of the directions to the light and to the eye, raised to the shininess
+    // EXERCISE(ch05-highlight): Blinn–Phong: the specular weight times the light's irradiance times the cosine between the normal and the unit halfway vector of the directions to the light and to the eye, raised to the shininess
     crate::toolkit::exercise::solution_begins("ch05-highlight");
     let material = surface.material;
     if material.specular == 0.0 {
@@ -56,6 +56,6 @@ pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
     }
     let halfway = (incoming.direction + surface.to_eye).normalize_or_zero();
     let cos = surface.normal.dot(halfway).max(0.0);
-    material.specular * incoming.radiance * cos.powf(material.shininess)
+    material.specular * incoming.irradiance * cos.powf(material.shininess)
     // END EXERCISE
 }

@@ -159,12 +159,12 @@ fn a_zero_weight_spawns_no_mirror_ray() {
 
 // The highlight.
 
-/// Light arriving from `direction` (towards the light) with radiance (2, 1, 0.5).
+/// Light arriving from `direction` (towards the light) with irradiance (2, 1, 0.5).
 fn light_from(direction: Vec3) -> Incoming {
     Incoming {
         direction: direction.normalize(),
         distance: 3.0,
-        radiance: Color::new(2.0, 1.0, 0.5),
+        irradiance: Color::new(2.0, 1.0, 0.5),
         casts_shadows: false,
     }
 }
@@ -172,7 +172,7 @@ fn light_from(direction: Vec3) -> Incoming {
 #[test]
 fn the_highlight_is_brightest_where_the_lights_mirror_image_is_seen() {
     let scene = floor();
-    // specular 0.5 × radiance (2, 1, 0.5), with h = n: cos = 1.
+    // specular 0.5 × irradiance (2, 1, 0.5), with h = n: cos = 1.
     let peak = Color::new(1.0, 0.5, 0.25);
     let s = 0.5f32.sqrt();
     for (eye_ray, light, case) in [
@@ -188,7 +188,7 @@ fn the_highlight_is_brightest_where_the_lights_mirror_image_is_seen() {
         assert!(
             close(found, peak),
             "{case}: the halfway vector of the directions to the light and to the eye is the \
-             normal, so the highlight is specular × radiance = {peak}; found {found}"
+             normal, so the highlight is specular × irradiance = {peak}; found {found}"
         );
     }
 }
@@ -204,7 +204,7 @@ fn the_highlight_falls_off_with_the_halfway_angle_to_the_power_shininess() {
     assert!(
         close(found, expected),
         "eye above, light 60° off the normal: h lies 30° from n, so the highlight is \
-         specular × radiance × cos(30°)^8 = {expected}; found {found} (is h a unit vector?)"
+         specular × irradiance × cos(30°)^8 = {expected}; found {found} (is h a unit vector?)"
     );
 }
 

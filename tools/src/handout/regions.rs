@@ -6,9 +6,10 @@
 //!
 //! ```text
 //! pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
-//!     // EXERCISE(ch03-lambert): albedo × radiance × max(0, n·l), ...
+//!     // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light, ...
+//!     crate::toolkit::exercise::solution_begins("ch03-lambert");
 //!     let cos_theta = surface.normal.dot(incoming.direction).max(0.0);
-//!     surface.material.color * incoming.radiance * cos_theta
+//!     surface.material.color * incoming.irradiance * cos_theta
 //!     // END EXERCISE
 //! }
 //! ```
@@ -18,8 +19,11 @@
 //!   are unique. The hint is one line, shown to the student.
 //! * The closing line is `// END EXERCISE`. Regions do not nest.
 //! * Regions live in the chapters' Rust files (`chapters/**/*.rs`).
-//! * Everything between them is the solution. Since the markers are
-//!   comments, the reference workspace compiles and behaves as if they were
+//! * Everything between them is the solution. Its first line is
+//!   `crate::toolkit::exercise::solution_begins("<id>");`, which lets
+//!   `cargo test` take the solution out at run time (see the toolkit's
+//!   `exercise` module); the handout takes that line out with the rest.
+//!   Since the markers are comments, the reference workspace compiles and behaves as if they were
 //!   not there.
 //!
 //! In a handout, the solution becomes `todo!("<id>: <hint>")`, which

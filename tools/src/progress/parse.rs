@@ -150,7 +150,7 @@ failures:
 ---- cosine_law_head_on_versus_sixty_degrees stdout ----
 
 thread 'cosine_law_head_on_versus_sixty_degrees' panicked at chapters/03-lambert/src/lib.rs:52:5:
-not yet implemented: ch03-lambert: albedo × radiance × max(0, n·l)
+not yet implemented: ch03-lambert: the cosine law: what a matte surface of this albedo sends back of the incoming light
 
 ---- snapshot_default stdout ----
 snapshot 03-lambert/default differs from its reference: 19200 of 19200 pixels differ by more than the tolerance; largest channel difference 255/255
@@ -195,7 +195,7 @@ test result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; fini
             parsed.panics,
             [(
                 "cosine_law_head_on_versus_sixty_degrees".to_owned(),
-                "not yet implemented: ch03-lambert: albedo × radiance × max(0, n·l)".to_owned()
+                "not yet implemented: ch03-lambert: the cosine law: what a matte surface of this albedo sends back of the incoming light".to_owned()
             )]
         );
         assert_eq!(parsed.compile_error, None);

@@ -201,7 +201,7 @@ mod tests {
     #[test]
     fn the_report_marks_the_first_failing_chapter_and_names_the_next_exercise() {
         let ok = "test result: ok. 5 passed; 0 failed; 0 ignored\n";
-        let open = "    // EXERCISE(ch03-lambert): albedo × radiance × max(0, n·l)\n    todo!(\"...\")\n    // END EXERCISE\n";
+        let open = "    // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light\n    todo!(\"...\")\n    // END EXERCISE\n";
         let rows = [
             row("02-hits", Some(ok), ""),
             row("03-lambert", Some(FAILING), open),
