@@ -19,17 +19,9 @@
 //!
 //! Each row is a list of runs `OBJECT*COUNT`, `-` meaning no object.
 
-use crate::toolkit::scene::Shape;
-
-/// What kind of shape an object is, in the words of the scene files.
-pub fn shape_name(shape: &Shape) -> &'static str {
-    match shape {
-        Shape::Sphere { .. } => "sphere",
-        Shape::Plane { .. } => "plane",
-        Shape::Triangle { .. } => "triangle",
-        Shape::SmoothTriangle { .. } => "smooth triangle",
-    }
-}
+/// What kind of shape an object is: the ray tree's names (`sphere`, `plane`,
+/// `triangle`, `smooth_triangle`), so that verify and `--pixel` agree.
+pub use crate::toolkit::ray_tree::shape_name;
 
 /// One object of a scene, as a student recognises it.
 #[derive(Debug, Clone, PartialEq, Eq)]
