@@ -276,10 +276,21 @@ pub fn run_or_explain(
     }
 }
 
-/// The effect plan for a scene and the scene with it applied; prints a note
-/// for each effect left to a later chapter (an error with `--strict`, and
-/// then `None`).
-fn planned(chapter: &Chapter, args: &RenderArgs, scene: Scene) -> Option<(EffectPlan, Scene)> {
+/// The loaded scene, its name, its effect plan and the scene with the plan
+/// applied; prints a note for each effect left to a later chapter. `None`
+/// (after saying why) when the scene did not load or `--strict` refuses it.
+fn planned(
+    chapter: &Chapter,
+    args: &RenderArgs,
+    loaded: Result<(Scene, String), SceneError>,
+) -> Option<(EffectPlan, Scene, String)> {
+    let (scene, name) = match loaded {
+        Ok(loaded) => loaded,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return None;
+        }
+    };
     let plan = EffectPlan::new(chapter, &scene, &args.without);
     for note in plan.notes() {
         if args.strict {
@@ -289,7 +300,7 @@ fn planned(chapter: &Chapter, args: &RenderArgs, scene: Scene) -> Option<(Effect
         eprintln!("note: {note}; this chapter renders without it");
     }
     let scene = plan.apply(chapter, scene);
-    Some((plan, scene))
+    Some((plan, scene, name))
 }
 
 /// [`run`] once the scene is loaded (or failed to load): `loaded` is the
@@ -300,14 +311,7 @@ fn run_loaded(
     loaded: Result<(Scene, String), SceneError>,
     render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
 ) -> ExitCode {
-    let (scene, name) = match loaded {
-        Ok(loaded) => loaded,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::FAILURE;
-        }
-    };
-    let Some((plan, scene)) = planned(chapter, args, scene) else {
+    let Some((plan, scene, name)) = planned(chapter, args, loaded) else {
         return ExitCode::FAILURE;
     };
     println!("{plan}");

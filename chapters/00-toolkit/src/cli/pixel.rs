@@ -36,14 +36,7 @@ pub(super) fn explain_pixel(
     pixel: Pixel,
     explain: impl Fn(&Scene, Pixel) -> (TracerInfo, RayNode),
 ) -> ExitCode {
-    let (scene, name) = match loaded {
-        Ok(loaded) => loaded,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::FAILURE;
-        }
-    };
-    let Some((plan, scene)) = planned(chapter, args, scene) else {
+    let Some((plan, scene, name)) = planned(chapter, args, loaded) else {
         return ExitCode::FAILURE;
     };
     eprintln!("{plan}");
