@@ -12,6 +12,7 @@ pub use toolkit::scene::nff;
 pub mod accuracy;
 pub mod bench;
 pub mod tracer;
+pub mod wide;
 
 /// The workbook's tools (the `workbook` crate), under `raybook` too.
 pub use workbook::{handout, progress, verify};
@@ -24,9 +25,10 @@ use toolkit::{Image, Scene, Stats};
 pub const CHAPTER: Chapter = tracer::CHAPTER;
 
 /// Renders a scene with the complete tracer and the scene's own criteria,
-/// its rays traced against a BVH of the scene (chapter 8), by the tracer
-/// the scene calls for ([`tracer::render_complete`]).
+/// its rays traced against a four-wide BVH of the scene ([`wide`], chapter
+/// 8's tree collapsed), by the tracer the scene calls for
+/// ([`tracer::render_complete`]).
 pub fn render(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
-    let bvh = ch08_bvh::Bvh::build(&scene.objects);
+    let bvh = wide::WideBvh::build(&scene.objects);
     tracer::render_complete(scene, &bvh, tracer::Termination::of(scene), on_row)
 }

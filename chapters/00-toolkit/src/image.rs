@@ -60,12 +60,10 @@ impl Image {
     /// value b/255. No sRGB curve is applied, so pixel values read straight
     /// off the lecture's formulas (half the light gives half the byte).
     pub fn to_rgb8(&self) -> ::image::RgbImage {
-        let bytes = self
-            .pixels
-            .iter()
-            .flat_map(|c| c.to_array())
-            .map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
-            .collect();
+        let mut bytes = vec![0u8; 3 * self.pixels.len()];
+        for (rgb, color) in bytes.chunks_exact_mut(3).zip(&self.pixels) {
+            rgb.copy_from_slice(&color.to_array().map(to_byte));
+        }
         ::image::RgbImage::from_raw(self.width, self.height, bytes).expect("buffer size")
     }
 
@@ -78,6 +76,17 @@ impl Image {
     pub fn save_png(&self, path: &Path) -> std::io::Result<()> {
         write_atomically(path, &self.to_png())
     }
+}
+
+/// A linear value clamped to [0, 1], times 255, rounded half away from zero:
+/// `(v.clamp(0, 1) * 255).round()`, spelt out because on baseline x86-64
+/// `f32::round` is a call into libm, and this runs three times a pixel.
+/// For 0 ≤ x < 2²³, x − ⌊x⌋ is exact, so comparing it with ½ rounds exactly
+/// as `round` does.
+fn to_byte(v: f32) -> u8 {
+    let x = v.clamp(0.0, 1.0) * 255.0;
+    let whole = x as u8; // truncates: x ≥ 0
+    whole + u8::from(x - f32::from(whole) >= 0.5)
 }
 
 /// Encodes an 8-bit RGB image as PNG.
@@ -113,4 +122,29 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     }
     file.persist(path).map_err(|e| e.error)?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::to_byte;
+
+    /// Every f32 from −0.5 to 1.5 in steps of 2⁻²⁴ near the rounding points
+    /// and beyond: the spelt-out rounding equals `f32::round`'s.
+    #[test]
+    fn to_byte_rounds_as_round_does() {
+        let round = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+        let mut v = -0.5f32;
+        while v < 1.5 {
+            assert_eq!(to_byte(v), round(v), "at {v:e}");
+            v = v.next_up().max(v + 1e-7);
+        }
+        for b in 0..255u8 {
+            // The values just around each half-way point b + ½.
+            let half = (f32::from(b) + 0.5) / 255.0;
+            for v in [half.next_down(), half, half.next_up()] {
+                assert_eq!(to_byte(v), round(v), "at {v:e}");
+            }
+        }
+        assert_eq!(to_byte(f32::NAN), round(f32::NAN));
+    }
 }

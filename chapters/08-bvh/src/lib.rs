@@ -1,7 +1,7 @@
 #![doc = include_str!("../README.md")]
 
 mod aabb;
-mod build;
+pub mod build;
 
 pub mod ray_tree;
 

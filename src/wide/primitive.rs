@@ -1,0 +1,160 @@
+//! What the wide BVH keeps of each object, and the ray prepared once for the
+//! many tests it will meet.
+
+use crate::toolkit::Vec3;
+use crate::toolkit::scene::Shape;
+use crate::tracer::{Ray, intersect_sphere};
+
+/// An object's geometry as intersection needs it: a sphere, or a triangle's
+/// corners (a smooth triangle's normals matter only once the hit is chosen,
+/// and are read from the scene then).
+#[derive(Debug, Clone, Copy)]
+pub enum Geometry {
+    Sphere { center: Vec3, radius: f32 },
+    Triangle { vertices: [Vec3; 3] },
+}
+
+/// A bounded object, stored in the order of the tree's leaves: 48 bytes.
+#[derive(Debug, Clone, Copy)]
+pub struct Primitive {
+    pub geometry: Geometry,
+    /// Index in the scene's objects.
+    pub object: u32,
+    /// Does it block shadow rays?
+    pub shadows: bool,
+}
+
+impl Primitive {
+    /// The primitive of a bounded shape; `None` for a plane.
+    pub fn of(shape: &Shape, object: usize, shadows: bool) -> Option<Primitive> {
+        let geometry = match *shape {
+            Shape::Sphere { center, radius } => Geometry::Sphere { center, radius },
+            Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
+                Geometry::Triangle { vertices }
+            }
+            Shape::Plane { .. } => return None,
+        };
+        let object = u32::try_from(object).expect("fewer than 2³² objects");
+        Some(Primitive {
+            geometry,
+            object,
+            shadows,
+        })
+    }
+
+    /// Where the ray meets it in (t_min, t_max): chapter 2's `intersect`, to
+    /// the last bit, with the triangle test's per-ray work done once.
+    #[inline]
+    pub fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<f32> {
+        match self.geometry {
+            Geometry::Sphere { center, radius } => {
+                intersect_sphere(center, radius, &ray.ray, t_min, t_max)
+            }
+            Geometry::Triangle { vertices } => ray.shear.intersect(vertices, t_min, t_max),
+        }
+    }
+}
+
+/// A ray with what every box and triangle test would otherwise recompute:
+/// 1/rd for the slab test, and the shear of the watertight triangle test.
+#[derive(Debug, Clone, Copy)]
+pub struct PreparedRay {
+    pub ray: Ray,
+    /// 1/rd per coordinate (±∞ where rd has a zero).
+    pub inverse: Vec3,
+    /// For each axis, 0 if rd points up that axis (the box's min face is
+    /// met first), 3 if down (the max face is): where the near planes are
+    /// among a node's six bound vectors.
+    pub near_face: [usize; 3],
+    pub shear: Shear,
+}
+
+impl PreparedRay {
+    #[inline]
+    pub fn new(ray: &Ray) -> PreparedRay {
+        let inverse = ray.direction.recip();
+        let face = |i: f32| if i.is_sign_negative() { 3 } else { 0 };
+        PreparedRay {
+            ray: *ray,
+            inverse,
+            near_face: [face(inverse.x), face(inverse.y), face(inverse.z)],
+            shear: Shear::new(ray),
+        }
+    }
+}
+
+/// The watertight triangle test's transform of space (chapter 2's
+/// `intersect_triangle`, after Woop, Benthin and Wald, JCGT 2013): the ray
+/// becomes the +z axis from the origin. Chapter 2 works it out for every
+/// triangle; it depends on the ray only, so here it is worked out once.
+#[derive(Debug, Clone, Copy)]
+pub struct Shear {
+    origin: Vec3,
+    /// The axis rd is largest along (z after the transform), and the other
+    /// two in an order that keeps the triangle's winding.
+    kx: usize,
+    ky: usize,
+    kz: usize,
+    /// rd[kx]/rd[kz], rd[ky]/rd[kz] and 1/rd[kz].
+    sx: f32,
+    sy: f32,
+    sz: f32,
+}
+
+impl Shear {
+    fn new(ray: &Ray) -> Shear {
+        let d = ray.direction;
+        let kz = d.abs().max_position();
+        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
+        if d[kz] < 0.0 {
+            std::mem::swap(&mut kx, &mut ky);
+        }
+        Shear {
+            origin: ray.origin,
+            kx,
+            ky,
+            kz,
+            sx: d[kx] / d[kz],
+            sy: d[ky] / d[kz],
+            sz: 1.0 / d[kz],
+        }
+    }
+
+    /// A corner in the ray's space: x, y across the ray, z along it.
+    #[inline]
+    fn project(&self, p: Vec3) -> (f32, f32, f32) {
+        let p = p - self.origin;
+        let (x, y, z) = (p[self.kx], p[self.ky], p[self.kz]);
+        (x - self.sx * z, y - self.sy * z, self.sz * z)
+    }
+
+    /// Chapter 2's `intersect_triangle`, the same operations in the same
+    /// order, so the same t to the last bit; only t is returned (the
+    /// barycentrics are worked out again for the one hit that is chosen).
+    #[inline]
+    pub fn intersect(&self, [p0, p1, p2]: [Vec3; 3], t_min: f32, t_max: f32) -> Option<f32> {
+        let (x0, y0, z0) = self.project(p0);
+        let (x1, y1, z1) = self.project(p1);
+        let (x2, y2, z2) = self.project(p2);
+        let mut u = x2 * y1 - y2 * x1;
+        let mut v = x0 * y2 - y0 * x2;
+        let mut w = x1 * y0 - y1 * x0;
+        if u == 0.0 || v == 0.0 || w == 0.0 {
+            // On an edge in f32: decide in f64, as chapter 2 does.
+            u = edge_f64(x2, y2, x1, y1);
+            v = edge_f64(x0, y0, x2, y2);
+            w = edge_f64(x1, y1, x0, y0);
+        }
+        let outside = (u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0);
+        let determinant = u + v + w;
+        if outside || determinant == 0.0 {
+            return None;
+        }
+        let t = (u * z0 + v * z1 + w * z2) / determinant;
+        (t.is_finite() && t > t_min && t < t_max).then_some(t)
+    }
+}
+
+fn edge_f64(px: f32, py: f32, qx: f32, qy: f32) -> f32 {
+    (px as f64 * qy as f64 - py as f64 * qx as f64) as f32
+}

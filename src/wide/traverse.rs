@@ -1,0 +1,132 @@
+//! Walking the four-wide tree: nearest boxes first for the closest hit, any
+//! order for a shadow ray's blocker.
+
+use arrayvec::ArrayVec;
+use ch08_bvh::MAX_DEPTH;
+
+use super::WideBvh;
+use super::node::{Child, Node4};
+use super::primitive::PreparedRay;
+
+/// Room for the lanes still to visit: each level down pops one entry and
+/// pushes at most four, and no path is longer than chapter 8's tree's.
+const STACK: usize = 3 * MAX_DEPTH + 4;
+
+/// The closest hit so far, chosen as chapter 2's loop chooses: the smallest
+/// t, and of equal t's the object that comes first in the scene.
+#[derive(Debug, Clone, Copy)]
+pub struct Closest {
+    t_max: f32,
+    /// t and object index.
+    pub found: Option<(f32, u32)>,
+}
+
+impl Closest {
+    pub fn new(t_max: f32) -> Closest {
+        Closest { t_max, found: None }
+    }
+
+    /// Hits are looked for below t_max or, once one is found, up to and
+    /// including its t (a tie may still win by its index).
+    #[inline]
+    pub fn limit(&self) -> f32 {
+        self.found.map_or(self.t_max, |(t, _)| t.next_up())
+    }
+
+    /// A hit at t ≤ limit(): kept if nearer, or as near and earlier.
+    #[inline]
+    pub fn offer(&mut self, t: f32, object: u32) {
+        if self
+            .found
+            .is_none_or(|(best, first)| t < best || object < first)
+        {
+            self.found = Some((t, object));
+        }
+    }
+}
+
+impl WideBvh<'_> {
+    /// Offers `closest` every primitive hit in the boxes the ray enters
+    /// before the closest hit found so far, nearer boxes first.
+    pub(super) fn closest(&self, ray: &PreparedRay, t_min: f32, closest: &mut Closest) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let mut stack = ArrayVec::<(Child, f32), STACK>::new();
+        stack.push((Child::Node(0), t_min));
+        while let Some((child, t_entry)) = stack.pop() {
+            if t_entry > closest.limit() {
+                continue; // a hit nearer than this box was found meanwhile
+            }
+            match child {
+                Child::Node(index) => {
+                    let node = &self.nodes[index as usize];
+                    push_nearest_last(node, ray, t_min, closest.limit(), &mut stack);
+                }
+                Child::Leaf { start, count } => {
+                    let (start, end) = (start as usize, (start + count) as usize);
+                    for primitive in &self.primitives[start..end] {
+                        if let Some(t) = primitive.intersect(ray, t_min, closest.limit()) {
+                            closest.offer(t, primitive.object);
+                        }
+                    }
+                }
+                Child::Empty => {}
+            }
+        }
+    }
+
+    /// Is there a shadow-casting primitive on the ray in (t_min, t_max)?
+    /// The first one found ends the search.
+    pub(super) fn any(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> bool {
+        if self.nodes.is_empty() {
+            return false;
+        }
+        let mut stack = ArrayVec::<u32, STACK>::new();
+        stack.push(0);
+        while let Some(index) = stack.pop() {
+            let node = &self.nodes[index as usize];
+            let (_, mut mask) = node.enter(ray, t_min, t_max);
+            while mask != 0 {
+                let lane = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                match node.child(lane) {
+                    Child::Node(child) => stack.push(child),
+                    Child::Leaf { start, count } => {
+                        let (start, end) = (start as usize, (start + count) as usize);
+                        let blocked = self.primitives[start..end]
+                            .iter()
+                            .any(|p| p.shadows && p.intersect(ray, t_min, t_max).is_some());
+                        if blocked {
+                            return true;
+                        }
+                    }
+                    Child::Empty => {}
+                }
+            }
+        }
+        false
+    }
+}
+
+/// Pushes the lanes of `node` that the ray enters in [t_min, limit], the
+/// farthest first, so that the nearest is visited next and its hits can
+/// rule out the others.
+#[inline]
+fn push_nearest_last(
+    node: &Node4,
+    ray: &PreparedRay,
+    t_min: f32,
+    limit: f32,
+    stack: &mut ArrayVec<(Child, f32), STACK>,
+) {
+    let (near, mut mask) = node.enter(ray, t_min, limit);
+    let mut entered = ArrayVec::<(Child, f32), 4>::new();
+    while mask != 0 {
+        let lane = mask.trailing_zeros() as usize;
+        mask &= mask - 1;
+        entered.push((node.child(lane), near[lane]));
+    }
+    entered.sort_unstable_by(|a, b| b.1.total_cmp(&a.1));
+    stack.extend(entered);
+}

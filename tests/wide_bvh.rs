@@ -1,0 +1,149 @@
+//! The complete tracer's four-wide BVH answers exactly as brute force does:
+//! the same hits to the last bit, so the same pictures and ray counts.
+
+mod common;
+
+use proptest::prelude::*;
+use raybook::toolkit::scene::{Object, Shape, nff};
+use raybook::toolkit::snapshot::workspace_root;
+use raybook::toolkit::{Image, Scene, Stats, Vec3};
+use raybook::tracer::{Ray, Termination, World, render_complete};
+use raybook::wide::WideBvh;
+
+fn render(scene: &Scene, world: &(impl World + ?Sized)) -> (Image, Stats) {
+    render_complete(scene, world, Termination::of(scene), || {})
+}
+
+#[test]
+fn wide_bvh_and_brute_force_give_the_same_picture_on_every_chapter_scene() {
+    for path in common::chapter_scene_files() {
+        let scene = Scene::load(&path).unwrap().with_size(80, 60);
+        let wide = WideBvh::build(&scene.objects);
+        let same = render(&scene, &scene.objects[..]) == render(&scene, &wide);
+        assert!(same, "{} differs", path.display());
+    }
+}
+
+#[test]
+fn wide_bvh_and_chapter_8s_give_the_same_picture_on_the_spd_scenes() {
+    let dir = workspace_root().join("scenes/spd");
+    let mut paths: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "nff"))
+        .collect();
+    paths.sort();
+    assert!(paths.len() >= 7, "{paths:?}");
+    for path in paths {
+        let scene = nff::load(&path).unwrap().with_size(64, 64);
+        let wide = WideBvh::build(&scene.objects);
+        let binary = ch08_bvh::Bvh::build(&scene.objects);
+        let same = render(&scene, &binary) == render(&scene, &wide);
+        assert!(same, "{} differs", path.display());
+    }
+}
+
+#[test]
+fn an_empty_scene_and_a_single_object_are_handled() {
+    let ray = Ray::new(Vec3::ZERO, Vec3::X);
+    let empty = WideBvh::build(&[]);
+    assert_eq!(empty.closest_hit(&ray, 0.0, f32::INFINITY), None);
+    assert!(!empty.any_hit(&ray, 0.0, f32::INFINITY));
+    let one = [Object {
+        shape: Shape::Sphere {
+            center: Vec3::new(5.0, 0.0, 0.0),
+            radius: 1.0,
+        },
+        material: 0,
+        shadows: true,
+    }];
+    let wide = WideBvh::build(&one);
+    assert_eq!(wide.node_count(), 1, "a root with one leaf lane");
+    assert_eq!(
+        wide.closest_hit(&ray, 0.0, f32::INFINITY).map(|h| h.t),
+        Some(4.0)
+    );
+    assert!(wide.any_hit(&ray, 0.0, 10.0));
+    assert!(!wide.any_hit(&ray, 0.0, 3.9));
+}
+
+fn point() -> impl Strategy<Value = Vec3> {
+    prop::array::uniform3(-4.0f32..4.0).prop_map(Vec3::from)
+}
+
+/// A direction, often along an axis or in a coordinate plane (zeros in rd
+/// make 1/rd infinite in the slab test), else anywhere.
+fn direction() -> impl Strategy<Value = Vec3> {
+    prop_oneof![
+        2 => point(),
+        1 => (point(), 0..3usize).prop_map(|(p, axis)| {
+            let mut d = Vec3::ZERO;
+            d[axis] = if p.x < 0.0 { -1.0 } else { 1.0 };
+            d
+        }),
+        1 => (point(), 0..3usize).prop_map(|(mut p, axis)| {
+            p[axis] = 0.0;
+            p
+        }),
+    ]
+}
+
+fn object() -> impl Strategy<Value = Object> {
+    let shape = prop_oneof![
+        4 => (point(), 0.05f32..1.5).prop_map(|(center, radius)| Shape::Sphere { center, radius }),
+        4 => (point(), point(), point()).prop_filter_map("no area", |(a, b, c)| {
+            let area = (b - a).cross(c - a).length();
+            (area > 1e-3).then_some(Shape::Triangle { vertices: [a, b, c] })
+        }),
+        // Axis-aligned triangles: flat boxes, rays along their faces.
+        2 => (point(), point(), point(), 0..3usize).prop_filter_map("no area", |(a, b, c, axis)| {
+            let [a, mut b, mut c] = [a, b, c];
+            (b[axis], c[axis]) = (a[axis], a[axis]);
+            let area = (b - a).cross(c - a).length();
+            (area > 1e-3).then_some(Shape::Triangle { vertices: [a, b, c] })
+        }),
+        1 => (point(), -3.0f32..3.0).prop_filter_map("no normal", |(n, offset)| {
+            (n.length() > 0.1).then(|| Shape::Plane { normal: n.normalize(), offset })
+        }),
+    ];
+    (shape, any::<bool>()).prop_map(|(shape, shadows)| Object {
+        shape,
+        material: 0,
+        shadows,
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Random objects, random rays (many along axes, some starting on a
+    /// primitive's corner): both questions answered exactly as chapter 2's
+    /// and chapter 4's loops answer them.
+    #[test]
+    fn wide_bvh_agrees_with_brute_force_on_random_rays(
+        objects in prop::collection::vec(object(), 1..80),
+        rays in prop::collection::vec((point(), direction(), 0.1f32..20.0, any::<bool>()), 24),
+    ) {
+        let wide = WideBvh::build(&objects);
+        for (origin, direction, t_max, from_corner) in rays {
+            prop_assume!(direction.length() > 1e-3);
+            let origin = match (from_corner, objects[0].shape) {
+                (true, Shape::Triangle { vertices }) => vertices[0],
+                _ => origin * 2.0,
+            };
+            let ray = Ray::new(origin, direction);
+            prop_assert_eq!(
+                wide.any_hit(&ray, 0.0, t_max),
+                objects[..].any_hit(&ray, 0.0, t_max)
+            );
+            prop_assert_eq!(
+                wide.closest_hit(&ray, 0.0, t_max),
+                objects[..].closest_hit(&ray, 0.0, t_max)
+            );
+            prop_assert_eq!(
+                wide.closest_hit(&ray, 0.0, f32::INFINITY),
+                objects[..].closest_hit(&ray, 0.0, f32::INFINITY)
+            );
+        }
+    }
+}
