@@ -90,7 +90,7 @@ impl Node4 {
             let plane = self.bounds[face + axis];
             (plane - Vec4::splat(ray.ray.origin[axis])) * Vec4::splat(ray.inverse[axis])
         };
-        let [nx, ny, nz] = ray.near_face;
+        let [nx, ny, nz] = ray.near_face.map(usize::from);
         let near = slab(0, nx)
             .max(slab(1, ny))
             .max(slab(2, nz))

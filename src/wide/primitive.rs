@@ -65,7 +65,7 @@ pub struct PreparedRay {
     /// For each axis, 0 if rd points up that axis (the box's min face is
     /// met first), 3 if down (the max face is): where the near planes are
     /// among a node's six bound vectors.
-    pub near_face: [usize; 3],
+    pub near_face: [u8; 3],
     pub shear: Shear,
 }
 
@@ -87,18 +87,19 @@ impl PreparedRay {
 /// `intersect_triangle`, after Woop, Benthin and Wald, JCGT 2013): the ray
 /// becomes the +z axis from the origin. Chapter 2 works it out for every
 /// triangle; it depends on the ray only, so here it is worked out once.
+///
+/// Chapter 2 picks coordinates kx, ky, kz of p − r0 and computes
+/// x = p[kx] − sx·p[kz], y = p[ky] − sy·p[kz], z = sz·p[kz]. Here each is a
+/// dot product with a row that holds 1, −sx (or −sy, or sz) and zeros: the
+/// same products and sums, since adding a zero term changes no bit (but a
+/// zero's sign, which no test here looks at), and no coordinate is picked
+/// by index, which costs a branch each time.
 #[derive(Debug, Clone, Copy)]
 pub struct Shear {
     origin: Vec3,
-    /// The axis rd is largest along (z after the transform), and the other
-    /// two in an order that keeps the triangle's winding.
-    kx: usize,
-    ky: usize,
-    kz: usize,
-    /// rd[kx]/rd[kz], rd[ky]/rd[kz] and 1/rd[kz].
-    sx: f32,
-    sy: f32,
-    sz: f32,
+    x: Vec3,
+    y: Vec3,
+    z: Vec3,
 }
 
 impl Shear {
@@ -109,14 +110,20 @@ impl Shear {
         if d[kz] < 0.0 {
             std::mem::swap(&mut kx, &mut ky);
         }
+        // The row a·e_k + b·e_kz, with e_i the unit vectors.
+        let row = |k: Option<usize>, a: f32, b: f32| {
+            let mut r = Vec3::ZERO;
+            if let Some(k) = k {
+                r[k] = a;
+            }
+            r[kz] = b;
+            r
+        };
         Shear {
             origin: ray.origin,
-            kx,
-            ky,
-            kz,
-            sx: d[kx] / d[kz],
-            sy: d[ky] / d[kz],
-            sz: 1.0 / d[kz],
+            x: row(Some(kx), 1.0, -(d[kx] / d[kz])),
+            y: row(Some(ky), 1.0, -(d[ky] / d[kz])),
+            z: row(None, 0.0, 1.0 / d[kz]),
         }
     }
 
@@ -124,8 +131,7 @@ impl Shear {
     #[inline]
     fn project(&self, p: Vec3) -> (f32, f32, f32) {
         let p = p - self.origin;
-        let (x, y, z) = (p[self.kx], p[self.ky], p[self.kz]);
-        (x - self.sx * z, y - self.sy * z, self.sz * z)
+        (self.x.dot(p), self.y.dot(p), self.z.dot(p))
     }
 
     /// Chapter 2's `intersect_triangle`, the same operations in the same
