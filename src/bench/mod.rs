@@ -27,7 +27,7 @@ use std::time::Instant;
 use indicatif::{HumanDuration, ProgressBar, ProgressStyle};
 
 pub use fractals::{with_sphereflake, with_tetrahedron};
-pub use primary::{PYTHON_VAR, agreement, hit_distances, primary_rays, primary_world};
+pub use primary::{Agreement, PYTHON_VAR, agreement, hit_distances, primary_rays, primary_world};
 
 use crate::toolkit::scene::MAX_IMAGE_SIDE;
 

@@ -105,10 +105,8 @@ enum EmbreeResult {
     Timed {
         /// Median time of one thread.
         seconds: f64,
-        /// The fraction of rays both call a hit or both a miss.
-        hit_agreement: f64,
-        /// Of the rays both hit, the fraction whose distances agree.
-        t_agreement: f64,
+        /// How its answers agree with raybook's.
+        agreement: Agreement,
     },
 }
 
@@ -244,27 +242,55 @@ fn seconds_of(report: &str) -> Vec<f64> {
         .collect()
 }
 
-/// How far two tracers' answers agree: the fraction of rays both call a
-/// hit or both a miss, and of those both hit, the fraction whose distances
-/// differ by at most [`T_TOLERANCE`] of the larger (1 if none hit).
-pub fn agreement(ours: &[f32], theirs: &[f32]) -> (f64, f64) {
+/// How far two tracers' answers to the same rays agree.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Agreement {
+    pub rays: usize,
+    /// Rays one tracer calls a hit and the other a miss.
+    pub hit_or_miss_differs: usize,
+    /// Rays both hit.
+    pub both_hit: usize,
+    /// Rays both hit whose distances differ by more than [`T_TOLERANCE`]
+    /// of the larger.
+    pub t_differs: usize,
+}
+
+impl Agreement {
+    /// The fraction of rays both call a hit or both a miss.
+    pub fn hit_or_miss(&self) -> f64 {
+        fraction_but(self.hit_or_miss_differs, self.rays)
+    }
+
+    /// Of the rays both hit, the fraction whose distances agree (1 if none).
+    pub fn t(&self) -> f64 {
+        fraction_but(self.t_differs, self.both_hit)
+    }
+}
+
+/// The fraction of `of` things that are not among `but`; 1 of none.
+fn fraction_but(but: usize, of: usize) -> f64 {
+    if of == 0 {
+        1.0
+    } else {
+        (of - but) as f64 / of as f64
+    }
+}
+
+/// Compares two tracers' hit distances for the same rays (+∞ for a miss).
+pub fn agreement(ours: &[f32], theirs: &[f32]) -> Agreement {
     assert_eq!(ours.len(), theirs.len(), "the same rays");
-    let same_kind = ours
-        .iter()
-        .zip(theirs)
-        .filter(|(a, b)| a.is_finite() == b.is_finite())
-        .count();
-    let both: Vec<_> = ours
-        .iter()
-        .zip(theirs)
-        .filter(|(a, b)| a.is_finite() && b.is_finite())
-        .collect();
-    let close = both
-        .iter()
-        .filter(|&&(a, b)| (a - b).abs() <= T_TOLERANCE * a.max(*b))
-        .count();
-    let fraction = |n: usize, of: usize| if of == 0 { 1.0 } else { n as f64 / of as f64 };
-    (fraction(same_kind, ours.len()), fraction(close, both.len()))
+    let pairs = || ours.iter().zip(theirs);
+    let both = || pairs().filter(|(a, b)| a.is_finite() && b.is_finite());
+    Agreement {
+        rays: ours.len(),
+        hit_or_miss_differs: pairs()
+            .filter(|(a, b)| a.is_finite() != b.is_finite())
+            .count(),
+        both_hit: both().count(),
+        t_differs: both()
+            .filter(|&(a, b)| (a - b).abs() > T_TOLERANCE * a.max(*b))
+            .count(),
+    }
 }
 
 /// Whether every object is a triangle, which is all embreex can trace.
@@ -321,13 +347,13 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
         timings_table(&timings, threads)
     );
     for t in &timings {
-        if let EmbreeResult::Timed { hit_agreement, .. } = t.embree
-            && hit_agreement < 0.999
+        if let EmbreeResult::Timed { agreement, .. } = t.embree
+            && agreement.hit_or_miss() < 0.999
         {
             out += &format!(
                 "\nwarning: {}: raybook and Embree agree on hit or miss for only {:.3} % of the rays",
                 t.name,
-                hit_agreement * 100.0
+                agreement.hit_or_miss() * 100.0
             );
         }
     }
@@ -365,11 +391,9 @@ fn time_scene(
         Ok(_) if !triangles_only(scene) => EmbreeResult::Skipped(TRIANGLES_ONLY.into()),
         Ok(embree) => {
             let (seconds, theirs) = embree.trace(scene, &rays, runs)?;
-            let (hit_agreement, t_agreement) = agreement(&t, &theirs);
             EmbreeResult::Timed {
                 seconds,
-                hit_agreement,
-                t_agreement,
+                agreement: agreement(&t, &theirs),
             }
         }
     };
@@ -397,7 +421,7 @@ fn timings_table(timings: &[PrimaryTiming], threads: u32) -> String {
         "Embree Mrays/s, 1 thread",
         "raybook per thread / Embree",
         "hit/miss agree",
-        "t agrees",
+        "t agrees (1e-4)",
     ];
     table::markdown(header, timings.iter().map(|t| t.cells(threads)), 1)
 }
@@ -408,18 +432,14 @@ impl PrimaryTiming {
     fn cells(&self, threads: u32) -> [String; 10] {
         let mrays = |seconds: f64| self.rays as f64 / seconds / 1e6;
         let per_thread = mrays(self.parallel_seconds) / f64::from(threads);
-        let percent = |f: f64| format!("{:.3} %", f * 100.0);
+        let percent = |f: f64, differ: usize| format!("{:.3} % ({differ} differ)", f * 100.0);
         let embree = match &self.embree {
             EmbreeResult::Skipped(why) => [why.clone(), "–".into(), "–".into(), "–".into()],
-            EmbreeResult::Timed {
-                seconds,
-                hit_agreement,
-                t_agreement,
-            } => [
+            EmbreeResult::Timed { seconds, agreement } => [
                 format!("{:.2}", mrays(*seconds)),
                 format!("{:.2}", per_thread / mrays(*seconds)),
-                percent(*hit_agreement),
-                percent(*t_agreement),
+                percent(agreement.hit_or_miss(), agreement.hit_or_miss_differs),
+                percent(agreement.t(), agreement.t_differs),
             ],
         };
         let [embree, ratio, hits_agree, t_agrees] = embree;
@@ -456,9 +476,16 @@ mod tests {
         let inf = f32::INFINITY;
         let ours = [1.0, 2.0, inf, inf, 4.0];
         let theirs = [1.0, 2.1, inf, 3.0, 4.0001];
-        let (hits, t) = agreement(&ours, &theirs);
-        assert_eq!(hits, 0.8, "one ray of five is a miss against a hit");
-        assert_eq!(t, 2.0 / 3.0, "2.0 against 2.1 differs by more than 1e-4");
-        assert_eq!(agreement(&[inf], &[inf]), (1.0, 1.0), "no hits: all agree");
+        let a = agreement(&ours, &theirs);
+        assert_eq!(a.hit_or_miss_differs, 1, "a miss against a hit");
+        assert_eq!(a.hit_or_miss(), 0.8);
+        assert_eq!((a.both_hit, a.t_differs), (3, 1), "2.0 against 2.1 differs");
+        assert_eq!(a.t(), 2.0 / 3.0, "4.0 against 4.0001 is within 1e-4");
+        let none = agreement(&[inf], &[inf]);
+        assert_eq!(
+            (none.hit_or_miss(), none.t()),
+            (1.0, 1.0),
+            "no hits: all agree"
+        );
     }
 }
