@@ -16,7 +16,8 @@ The script builds Embree's scene (not timed: the commit happens in an
 untimed call on one ray), then times `EmbreeScene.run` on all the rays,
 RUNS times: one call, one thread (embreex loops over the rays with
 rtcIntersect1, the single-ray query, in C). It prints one line per run,
-`seconds S`, and writes the hit distance of every ray of the last run to
+`seconds S cpu C`: the wall time and the process's CPU time (no more than
+the wall time if one thread did the work), and writes the hit distance of every ray of the last run to
 FOLDER/t.f32 (f32, +inf where the ray hits nothing), for raybook to compare.
 
 `python3 embree_primary.py --check` exits 0 if embreex and numpy can be
@@ -56,10 +57,11 @@ def main(folder, runs):
     # The first query commits the scene: Embree builds its BVH there.
     scene.run(origins[:1], directions[:1])
     for _ in range(runs):
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), time.process_time()
         hits = scene.run(origins, directions, output=1)
         seconds = time.perf_counter() - start
-        print(f"seconds {seconds:.9f}", flush=True)
+        cpu = time.process_time() - cpu
+        print(f"seconds {seconds:.9f} cpu {cpu:.9f}", flush=True)
     t = np.where(hits["primID"] >= 0, hits["tfar"], np.inf).astype("<f4")
     t.tofile(folder / "t.f32")
 

@@ -199,7 +199,16 @@ impl Embree {
             let err = String::from_utf8_lossy(&output.stderr);
             return Err(format!("Embree's script failed: {}", err.trim()));
         }
-        let seconds = seconds_of(&String::from_utf8_lossy(&output.stdout));
+        let report = String::from_utf8_lossy(&output.stdout);
+        let seconds = seconds_of(&report);
+        let cpu = cpu_seconds_of(&report);
+        if cpu
+            .iter()
+            .zip(&seconds)
+            .any(|(cpu, wall)| *cpu > 1.2 * wall)
+        {
+            eprintln!("warning: Embree used more than one core's time while timed");
+        }
         if seconds.is_empty() {
             return Err("Embree's script reported no times".into());
         }
@@ -234,11 +243,21 @@ fn read_f32(path: &Path) -> Result<Vec<f32>, String> {
         .collect())
 }
 
-/// The times in the script's report: its lines `seconds S`.
+/// The wall times in the script's report: its lines `seconds S cpu C`.
 fn seconds_of(report: &str) -> Vec<f64> {
+    report_field(report, 1)
+}
+
+/// The process's CPU times in the script's report.
+fn cpu_seconds_of(report: &str) -> Vec<f64> {
+    report_field(report, 3)
+}
+
+fn report_field(report: &str, index: usize) -> Vec<f64> {
     report
         .lines()
-        .filter_map(|l| l.strip_prefix("seconds ")?.trim().parse().ok())
+        .filter(|l| l.starts_with("seconds "))
+        .filter_map(|l| l.split_whitespace().nth(index)?.parse().ok())
         .collect()
 }
 
@@ -419,6 +438,7 @@ fn timings_table(timings: &[PrimaryTiming], threads: u32) -> String {
         "raybook Mrays/s, 1 thread",
         &per_thread,
         "Embree Mrays/s, 1 thread",
+        "raybook 1 thread / Embree",
         "raybook per thread / Embree",
         "hit/miss agree",
         "t agrees (1e-4)",
@@ -429,20 +449,22 @@ fn timings_table(timings: &[PrimaryTiming], threads: u32) -> String {
 impl PrimaryTiming {
     /// The table's cells for this scene; where Embree did not run, its
     /// first cell says why and the others are dashes.
-    fn cells(&self, threads: u32) -> [String; 10] {
+    fn cells(&self, threads: u32) -> [String; 11] {
         let mrays = |seconds: f64| self.rays as f64 / seconds / 1e6;
         let per_thread = mrays(self.parallel_seconds) / f64::from(threads);
+        let dash = || "–".to_owned();
         let percent = |f: f64, differ: usize| format!("{:.3} % ({differ} differ)", f * 100.0);
         let embree = match &self.embree {
-            EmbreeResult::Skipped(why) => [why.clone(), "–".into(), "–".into(), "–".into()],
+            EmbreeResult::Skipped(why) => [why.clone(), dash(), dash(), dash(), dash()],
             EmbreeResult::Timed { seconds, agreement } => [
                 format!("{:.2}", mrays(*seconds)),
+                format!("{:.2}", mrays(self.serial_seconds) / mrays(*seconds)),
                 format!("{:.2}", per_thread / mrays(*seconds)),
                 percent(agreement.hit_or_miss(), agreement.hit_or_miss_differs),
                 percent(agreement.t(), agreement.t_differs),
             ],
         };
-        let [embree, ratio, hits_agree, t_agrees] = embree;
+        let [embree, serial_ratio, ratio, hits_agree, t_agrees] = embree;
         [
             self.name.clone(),
             self.primitives.to_string(),
@@ -451,6 +473,7 @@ impl PrimaryTiming {
             format!("{:.2}", mrays(self.serial_seconds)),
             format!("{per_thread:.2}"),
             embree,
+            serial_ratio,
             ratio,
             hits_agree,
             t_agrees,
@@ -460,14 +483,13 @@ impl PrimaryTiming {
 
 #[cfg(test)]
 mod tests {
-    use super::{agreement, seconds_of};
+    use super::{agreement, cpu_seconds_of, seconds_of};
 
     #[test]
     fn the_times_are_read_from_the_scripts_report() {
-        assert_eq!(
-            seconds_of("seconds 0.5\nnoise\nseconds 1.25\n"),
-            [0.5, 1.25]
-        );
+        let report = "seconds 0.5 cpu 0.25\nnoise\nseconds 1.25 cpu 1.5\n";
+        assert_eq!(seconds_of(report), [0.5, 1.25]);
+        assert_eq!(cpu_seconds_of(report), [0.25, 1.5]);
         assert!(seconds_of("nothing").is_empty());
     }
 
