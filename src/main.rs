@@ -25,7 +25,8 @@ enum Command {
     /// Renders a scene file (TOML, or NFF if it ends in .nff) with the
     /// complete tracer.
     Render(RenderArgs),
-    /// Times the SPD scenes, against POV-Ray where it is installed.
+    /// Times the SPD scenes, against POV-Ray where it is installed (with
+    /// --primary: primary rays per thread, against Embree).
     Bench(raybook::bench::BenchArgs),
     /// Measures what accuracy costs in time: depth, threshold, samples per
     /// pixel and effects, as a table, a CSV and a plot.

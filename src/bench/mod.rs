@@ -7,12 +7,15 @@
 //! in this process and reports the BVH's build time and the render time
 //! against the number of primitives (`scaling.rs`), for the SPD scenes and for
 //! larger sphereflakes and Sierpinski tetrahedra made here (`fractals.rs`).
+//! `--primary` times only the tracing of the primary rays, per thread,
+//! against Embree 4 on the same rays (`primary.rs`).
 //!
 //! The measuring helpers, [`median`] and the Markdown [`table`], serve
 //! `raybook accuracy` and `cargo bench` too.
 
 mod fractals;
 mod povray;
+mod primary;
 mod scaling;
 mod spd;
 pub mod table;
@@ -24,6 +27,7 @@ use std::time::Instant;
 use indicatif::{HumanDuration, ProgressBar, ProgressStyle};
 
 pub use fractals::{with_sphereflake, with_tetrahedron};
+pub use primary::{Agreement, PYTHON_VAR, agreement, hit_distances, primary_rays, primary_world};
 
 use crate::toolkit::scene::MAX_IMAGE_SIDE;
 
@@ -64,6 +68,21 @@ pub struct BenchArgs {
     #[arg(long)]
     pub scaling: bool,
 
+    /// Report primary-ray throughput instead: each scene's rays (one per
+    /// pixel, through its centre) traced to their closest hit against
+    /// chapter 8's BVH, on one thread and on --threads threads, and by
+    /// Embree 4 on one thread, with how far the two agree. Only the
+    /// tracing is timed. Embree runs through the Python package embreex,
+    /// in $RAYBOOK_PYTHON (else python3); where it cannot be imported, or
+    /// the scene has spheres (embreex traces triangles only), the table
+    /// says so.
+    #[arg(long, conflicts_with = "scaling")]
+    pub primary: bool,
+
+    /// With --primary: do not run Embree even if it is installed.
+    #[arg(long, requires = "primary")]
+    pub no_embree: bool,
+
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
@@ -76,6 +95,8 @@ pub fn run(args: &BenchArgs) -> ExitCode {
     let report = spd_scenes(&args.scenes, &args.only).and_then(|scenes| {
         if args.scaling {
             scaling::report(args, threads, &scenes)
+        } else if args.primary {
+            primary::report(args, threads, &scenes)
         } else {
             spd::report(args, threads, &scenes)
         }

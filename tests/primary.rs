@@ -1,0 +1,152 @@
+//! `raybook bench --primary`: the rays it times are the renderer's primary
+//! rays, it reports a row per scene, and it goes on without Embree.
+//! (No timing is asserted: speed is shown by the bench, not by tests.)
+
+use std::process::{Command, Output};
+
+use raybook::bench::{PYTHON_VAR, hit_distances, primary_rays, primary_world};
+use raybook::toolkit::Scene;
+use raybook::toolkit::snapshot::workspace_root;
+
+fn spd(name: &str, width: u32, height: u32) -> Scene {
+    let path = workspace_root().join("scenes/spd").join(name);
+    raybook::nff::load(path).unwrap().with_size(width, height)
+}
+
+/// For each pixel, row by row: does the renderer's picture show something
+/// other than the background there?
+fn rendered_hits(scene: &Scene) -> Vec<bool> {
+    let (image, _) = raybook::render(scene, || {});
+    let background = scene.image.background;
+    (0..scene.image.height)
+        .flat_map(|y| (0..scene.image.width).map(move |x| (x, y)))
+        .map(|(x, y)| image.get(x, y) != background)
+        .collect()
+}
+
+#[test]
+fn the_primary_rays_hit_where_the_renderer_shows_the_scene() {
+    // Not square, so that rows and columns cannot be swapped unnoticed.
+    for name in ["tetra-3.nff", "teapot-2.nff"] {
+        let scene = spd(name, 24, 16);
+        let rays = primary_rays(&scene);
+        assert_eq!(rays.len(), 24 * 16, "{name}: one ray per pixel");
+        let hits: Vec<bool> = hit_distances(&primary_world(&scene), &rays)
+            .iter()
+            .map(|t| t.is_finite())
+            .collect();
+        let shown = rendered_hits(&scene);
+        assert!(
+            shown.iter().any(|&s| s) && shown.iter().any(|&s| !s),
+            "{name}: the test needs pixels of both kinds"
+        );
+        let differ: Vec<usize> = (0..hits.len()).filter(|&i| hits[i] != shown[i]).collect();
+        assert!(differ.is_empty(), "{name}: pixels {differ:?} differ");
+    }
+}
+
+fn bench(args: &[&str], python: Option<&str>) -> Output {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_raybook"));
+    command.args(["bench", "--primary", "--quiet"]).args(args);
+    if let Some(python) = python {
+        command.env(PYTHON_VAR, python);
+    }
+    command.output().unwrap()
+}
+
+/// The cells of the table row of `scene` in the bench's output.
+fn row(stdout: &str, scene: &str) -> Vec<String> {
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with(&format!("| {scene} ")))
+        .unwrap_or_else(|| panic!("no row for {scene} in\n{stdout}"));
+    line.trim_matches('|')
+        .split('|')
+        .map(|c| c.trim().to_owned())
+        .collect()
+}
+
+#[test]
+fn a_tiny_scene_gets_a_row_with_its_rays_hits_and_throughput() {
+    let out = bench(
+        &[
+            "--only",
+            "tetra-3",
+            "--size",
+            "16",
+            "--runs",
+            "1",
+            "--no-embree",
+        ],
+        None,
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let cells = row(&stdout, "tetra-3");
+    assert_eq!(cells.len(), 11, "{cells:?}");
+    assert_eq!(cells[1], "64", "primitives");
+    assert_eq!(cells[2], "256", "16×16 rays");
+    let shown = rendered_hits(&spd("tetra-3.nff", 16, 16));
+    let shown = shown.iter().filter(|&&s| s).count();
+    assert_eq!(
+        cells[3],
+        shown.to_string(),
+        "hits: the pixels that show the scene"
+    );
+    for (column, cell) in [(4, &cells[4]), (5, &cells[5])] {
+        let mrays: f64 = cell.parse().unwrap();
+        assert!(mrays > 0.0, "column {column}: {cell} Mrays/s");
+    }
+    assert_eq!(cells[6], "not run (--no-embree)");
+    assert_eq!(
+        stdout.lines().filter(|l| l.starts_with("| ")).count(),
+        2,
+        "header and one row"
+    );
+}
+
+#[test]
+fn without_embree_the_table_says_how_to_install_it() {
+    let out = bench(
+        &["--only", "tetra-3", "--size", "8", "--runs", "1"],
+        Some("/nonexistent/python3"),
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    assert_eq!(
+        row(&stdout, "tetra-3")[6],
+        "not installed: pip install embreex numpy"
+    );
+}
+
+/// Only where embreex is installed ($RAYBOOK_PYTHON, else python3) does
+/// this compare; elsewhere the table must say it is not.
+#[test]
+fn where_embree_runs_it_agrees_with_raybook_and_spheres_are_left_out() {
+    let out = bench(
+        &[
+            "--only", "tetra-3", "--only", "balls-1", "--size", "32", "--runs", "1",
+        ],
+        None,
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    let tetra = row(&stdout, "tetra-3");
+    if tetra[6].starts_with("not installed") {
+        assert_eq!(row(&stdout, "balls-1")[6], tetra[6]);
+        return;
+    }
+    // "99.999 % (3 differ)"
+    let percent = |cell: &str| -> f64 { cell.split(" %").next().unwrap().parse().unwrap() };
+    assert!(tetra[6].parse::<f64>().unwrap() > 0.0, "{tetra:?}");
+    assert!(percent(&tetra[9]) >= 99.9, "hit/miss: {tetra:?}");
+    assert!(percent(&tetra[10]) >= 99.9, "distances: {tetra:?}");
+    assert_eq!(
+        row(&stdout, "balls-1")[6],
+        "n/a (embreex has triangles only)"
+    );
+}
