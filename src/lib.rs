@@ -29,6 +29,12 @@ pub const CHAPTER: Chapter = tracer::CHAPTER;
 /// 8's tree collapsed), by the tracer the scene calls for
 /// ([`tracer::render_complete`]).
 pub fn render(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
-    let bvh = wide::WideBvh::build(&scene.objects);
+    let bvh = world(scene);
     tracer::render_complete(scene, &bvh, tracer::Termination::of(scene), on_row)
+}
+
+/// What the complete tracer traces rays against: the four-wide BVH of the
+/// scene's objects.
+pub fn world(scene: &Scene) -> wide::WideBvh<'_> {
+    wide::WideBvh::build(&scene.objects)
 }

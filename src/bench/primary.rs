@@ -3,7 +3,8 @@
 //!
 //! The rays are the renderer's own: one per pixel, through its centre, from
 //! chapter 1's [`Camera`] ([`primary_rays`]). raybook traces them with
-//! `closest_hit` against [`primary_world`] (chapter 8's BVH), on one thread
+//! `closest_hit` against [`primary_world`] (the complete tracer's four-wide
+//! BVH, [`crate::wide`]), on one thread
 //! and on `--threads` threads; Embree traces them through the PyPI package
 //! embreex, run by `benches/embree_primary.py` in a Python that can import
 //! it. Only the tracing is timed on either side: not making the rays, not
@@ -39,10 +40,10 @@ const TRIANGLES_ONLY: &str = "n/a (embreex has triangles only)";
 /// Two distances agree if they differ by at most this fraction.
 const T_TOLERANCE: f32 = 1e-4;
 
-/// The world primary rays are traced against: chapter 8's BVH over the
-/// scene's objects. The one line to change to time another accelerator.
-pub fn primary_world(scene: &Scene) -> impl World {
-    ch08_bvh::Bvh::build(&scene.objects)
+/// The world primary rays are traced against: the complete tracer's
+/// ([`crate::world`]), the one `raybook render` uses.
+pub fn primary_world(scene: &Scene) -> impl World + '_ {
+    crate::world(scene)
 }
 
 /// The primary rays of `scene` at its image size, row by row from the top

@@ -6,7 +6,8 @@
 //! in one slab test of four lanes (`node.rs`). Beside that:
 //! - primitives are stored compactly in leaf order (48 bytes each, against
 //!   chapter 8's copy of the whole `Shape`), and the scene's own shape is
-//!   read only for the one hit that is chosen;
+//!   read only for the one hit that is chosen, with the barycentric weights
+//!   its triangle test found (chapter 2's `hit_at` finds them again);
 //! - the per-ray parts of the slab and triangle tests are worked out once
 //!   per ray, not once per box or triangle (`primitive.rs`);
 //! - the traversal stack is not filled before use.
@@ -23,9 +24,9 @@ use ch08_bvh::bounds;
 use ch08_bvh::build::{self, Item};
 
 use crate::toolkit::scene::{Object, Shape};
-use crate::tracer::{Hit, Ray, World, hit_at};
+use crate::tracer::{Hit, Ray, World, hit_with_weights};
 use node::{Child, Node4};
-use primitive::{PreparedRay, Primitive};
+use primitive::{PreparedRay, Primitive, Weights};
 
 /// A four-wide bounding volume hierarchy over a scene's objects.
 #[derive(Debug, Clone)]
@@ -132,13 +133,20 @@ impl World for WideBvh<'_> {
             let limit = closest.limit();
             let t = crate::tracer::intersect(self.shape(object), ray, t_min, limit);
             if let Some(t) = t {
-                closest.offer(t, object as u32);
+                closest.offer((t, Weights::NONE), object as u32);
             }
         }
         self.closest(&prepared, t_min, &mut closest);
-        let (t, object) = closest.found?;
+        let (t, object, weights) = closest.found?;
         let object = object as usize;
-        Some(hit_at(self.shape(object), ray, t, object))
+        let weights = weights.alpha_beta();
+        Some(hit_with_weights(
+            self.shape(object),
+            ray,
+            t,
+            weights,
+            object,
+        ))
     }
 
     fn any_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {

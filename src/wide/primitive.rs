@@ -43,12 +43,14 @@ impl Primitive {
     }
 
     /// Where the ray meets it in (t_min, t_max): chapter 2's `intersect`, to
-    /// the last bit, with the triangle test's per-ray work done once.
+    /// the last bit, with the triangle test's per-ray work done once; with
+    /// a triangle's barycentric weights, which chapter 2 works out again.
     #[inline]
-    pub fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<f32> {
+    pub fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<(f32, Weights)> {
         match self.geometry {
             Geometry::Sphere { center, radius } => {
-                intersect_sphere(center, radius, &ray.ray, t_min, t_max)
+                let t = intersect_sphere(center, radius, &ray.ray, t_min, t_max)?;
+                Some((t, Weights::NONE))
             }
             Geometry::Triangle { vertices } => ray.shear.intersect(vertices, t_min, t_max),
         }
@@ -135,10 +137,15 @@ impl Shear {
     }
 
     /// Chapter 2's `intersect_triangle`, the same operations in the same
-    /// order, so the same t to the last bit; only t is returned (the
-    /// barycentrics are worked out again for the one hit that is chosen).
+    /// order, so the same t to the last bit. The barycentric weights are
+    /// kept as fractions, divided only for the one hit that is chosen.
     #[inline]
-    pub fn intersect(&self, [p0, p1, p2]: [Vec3; 3], t_min: f32, t_max: f32) -> Option<f32> {
+    pub fn intersect(
+        &self,
+        [p0, p1, p2]: [Vec3; 3],
+        t_min: f32,
+        t_max: f32,
+    ) -> Option<(f32, Weights)> {
         let (x0, y0, z0) = self.project(p0);
         let (x1, y1, z1) = self.project(p1);
         let (x2, y2, z2) = self.project(p2);
@@ -157,7 +164,31 @@ impl Shear {
             return None;
         }
         let t = (u * z0 + v * z1 + w * z2) / determinant;
-        (t.is_finite() && t > t_min && t < t_max).then_some(t)
+        let weights = Weights { v, w, determinant };
+        (t.is_finite() && t > t_min && t < t_max).then_some((t, weights))
+    }
+}
+
+/// A triangle hit's barycentric weights (α, β) = (v/det, w/det), as chapter
+/// 2's `intersect_triangle` computes them, before the division.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Weights {
+    v: f32,
+    w: f32,
+    determinant: f32,
+}
+
+impl Weights {
+    /// For shapes that have none: (0, 0).
+    pub const NONE: Weights = Weights {
+        v: 0.0,
+        w: 0.0,
+        determinant: 1.0,
+    };
+
+    /// (α, β).
+    pub fn alpha_beta(&self) -> (f32, f32) {
+        (self.v / self.determinant, self.w / self.determinant)
     }
 }
 

@@ -6,7 +6,7 @@ use ch08_bvh::MAX_DEPTH;
 
 use super::WideBvh;
 use super::node::{Child, Node4};
-use super::primitive::PreparedRay;
+use super::primitive::{PreparedRay, Weights};
 
 /// Room for the lanes still to visit: each level down pops one entry and
 /// pushes at most four, and no path is longer than chapter 8's tree's.
@@ -17,8 +17,8 @@ const STACK: usize = 3 * MAX_DEPTH + 4;
 #[derive(Debug, Clone, Copy)]
 pub struct Closest {
     t_max: f32,
-    /// t and object index.
-    pub found: Option<(f32, u32)>,
+    /// t, object index, and the hit's barycentric weights if a triangle's.
+    pub found: Option<(f32, u32, Weights)>,
 }
 
 impl Closest {
@@ -30,17 +30,17 @@ impl Closest {
     /// including its t (a tie may still win by its index).
     #[inline]
     pub fn limit(&self) -> f32 {
-        self.found.map_or(self.t_max, |(t, _)| t.next_up())
+        self.found.map_or(self.t_max, |(t, _, _)| t.next_up())
     }
 
     /// A hit at t ≤ limit(): kept if nearer, or as near and earlier.
     #[inline]
-    pub fn offer(&mut self, t: f32, object: u32) {
+    pub fn offer(&mut self, (t, weights): (f32, Weights), object: u32) {
         if self
             .found
-            .is_none_or(|(best, first)| t < best || object < first)
+            .is_none_or(|(best, first, _)| t < best || object < first)
         {
-            self.found = Some((t, object));
+            self.found = Some((t, object, weights));
         }
     }
 }
@@ -66,8 +66,8 @@ impl WideBvh<'_> {
                 Child::Leaf { start, count } => {
                     let (start, end) = (start as usize, (start + count) as usize);
                     for primitive in &self.primitives[start..end] {
-                        if let Some(t) = primitive.intersect(ray, t_min, closest.limit()) {
-                            closest.offer(t, primitive.object);
+                        if let Some(hit) = primitive.intersect(ray, t_min, closest.limit()) {
+                            closest.offer(hit, primitive.object);
                         }
                     }
                 }

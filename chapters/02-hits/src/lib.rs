@@ -54,6 +54,24 @@ pub fn intersect(shape: &Shape, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32
 
 /// The hit record of `ray` meeting `shape` at distance t.
 pub fn hit_at(shape: &Shape, ray: &Ray, t: f32, object: usize) -> Hit {
+    let weights = match *shape {
+        Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
+            barycentrics(vertices, ray)
+        }
+        Shape::Sphere { .. } | Shape::Plane { .. } => (0.0, 0.0),
+    };
+    hit_with_weights(shape, ray, t, weights, object)
+}
+
+/// [`hit_at`] for a caller that knows a triangle's barycentric weights
+/// (α, β) of the hit already (they are ignored for other shapes).
+pub fn hit_with_weights(
+    shape: &Shape,
+    ray: &Ray,
+    t: f32,
+    weights: (f32, f32),
+    object: usize,
+) -> Hit {
     // Each point lies on its surface up to rounding (projected onto a sphere
     // or plane; a triangle's is the barycentric mean of its corners), which
     // bounds its error by a few units in the last place (f32::EPSILON
@@ -72,7 +90,6 @@ pub fn hit_at(shape: &Shape, ray: &Ray, t: f32, object: usize) -> Hit {
         }
         Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             let normal = triangle_normal(vertices);
-            let weights = barycentrics(vertices, ray);
             let point = triangle_point(vertices, weights);
             let shading_normal = match *shape {
                 Shape::SmoothTriangle { normals, .. } => smooth_normal(normals, weights, normal),
