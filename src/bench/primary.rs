@@ -362,7 +362,7 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
     };
     let mut out = format!(
         "{size}×{size} primary rays (one per pixel, through its centre), closest hit against \
-         chapter 8's BVH, 1 and {threads} threads; {embree_line}; median of {runs} runs, \
+         the complete tracer's four-wide BVH, 1 and {threads} threads; {embree_line}; median of {runs} runs, \
          tracing only (no ray making, no BVH build)\n\n{}",
         timings_table(&timings, threads)
     );
