@@ -49,7 +49,7 @@ impl Primitive {
     pub fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<(f32, Weights)> {
         match self.geometry {
             Geometry::Sphere { center, radius } => {
-                let t = intersect_sphere(center, radius, &ray.ray, t_min, t_max)?;
+                let t = intersect_sphere_quickly(center, radius, &ray.ray, t_min, t_max)?;
                 Some((t, Weights::NONE))
             }
             Geometry::Triangle { vertices } => ray.shear.intersect(vertices, t_min, t_max),
@@ -106,26 +106,23 @@ pub struct Shear {
 
 impl Shear {
     fn new(ray: &Ray) -> Shear {
-        let d = ray.direction;
-        let kz = d.abs().max_position();
+        let d = ray.direction.to_array();
+        let kz = ray.direction.abs().max_position();
         let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
         if d[kz] < 0.0 {
             std::mem::swap(&mut kx, &mut ky);
         }
-        // The row a·e_k + b·e_kz, with e_i the unit vectors.
-        let row = |k: Option<usize>, a: f32, b: f32| {
-            let mut r = Vec3::ZERO;
-            if let Some(k) = k {
-                r[k] = a;
-            }
-            r[kz] = b;
-            r
-        };
+        // The rows e_kx − sx·e_kz, e_ky − sy·e_kz and sz·e_kz (e_i the unit
+        // vectors), built as arrays: indexing a Vec3 is a branch per index.
+        let (mut x, mut y, mut z) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+        (x[kx], x[kz]) = (1.0, -(d[kx] / d[kz]));
+        (y[ky], y[kz]) = (1.0, -(d[ky] / d[kz]));
+        z[kz] = 1.0 / d[kz];
         Shear {
             origin: ray.origin,
-            x: row(Some(kx), 1.0, -(d[kx] / d[kz])),
-            y: row(Some(ky), 1.0, -(d[ky] / d[kz])),
-            z: row(None, 0.0, 1.0 / d[kz]),
+            x: Vec3::from_array(x),
+            y: Vec3::from_array(y),
+            z: Vec3::from_array(z),
         }
     }
 
@@ -194,4 +191,31 @@ impl Weights {
 
 fn edge_f64(px: f32, py: f32, qx: f32, qy: f32) -> f32 {
     (px as f64 * qy as f64 - py as f64 * qx as f64) as f32
+}
+
+/// Chapter 2's `intersect_sphere`, to the last bit, after a test in f32
+/// that rules out most rays that miss: those that pass the centre farther
+/// than r, by a margin that covers every rounding.
+///
+/// With f = r0 − c and rd of length 1 (up to rounding), the ray passes the
+/// centre at distance |h|, h = f − (f·rd)·rd. Computed in f32, h is off by
+/// a few units in the last place of |f| (f32::EPSILON·|f| each); 64 of them
+/// is a wide margin. So if |h| > r + 64·ε·|f|, the exact |h| exceeds r too,
+/// and so does chapter 2's (in f64, far more exact): its discriminant
+/// 4a(r² − h·h) is negative, and it answers None as this does.
+#[inline]
+fn intersect_sphere_quickly(
+    center: Vec3,
+    radius: f32,
+    ray: &Ray,
+    t_min: f32,
+    t_max: f32,
+) -> Option<f32> {
+    let f = ray.origin - center;
+    let h = f - f.dot(ray.direction) * ray.direction;
+    let margin = radius + 64.0 * f32::EPSILON * f.abs().max_element();
+    if h.length_squared() > margin * margin {
+        return None;
+    }
+    intersect_sphere(center, radius, ray, t_min, t_max)
 }

@@ -61,9 +61,17 @@ impl Image {
     /// off the lecture's formulas (half the light gives half the byte).
     pub fn to_rgb8(&self) -> ::image::RgbImage {
         let mut bytes = vec![0u8; 3 * self.pixels.len()];
-        for (rgb, color) in bytes.chunks_exact_mut(3).zip(&self.pixels) {
-            rgb.copy_from_slice(&color.to_array().map(to_byte));
-        }
+        let row = 3 * self.width.max(1) as usize;
+        let rows = bytes
+            .par_chunks_mut(row)
+            .zip(self.pixels.par_chunks(row / 3));
+        rows.for_each(|(bytes, pixels)| {
+            for (rgb, color) in bytes.chunks_exact_mut(3).zip(pixels) {
+                rgb[0] = to_byte(color.x);
+                rgb[1] = to_byte(color.y);
+                rgb[2] = to_byte(color.z);
+            }
+        });
         ::image::RgbImage::from_raw(self.width, self.height, bytes).expect("buffer size")
     }
 
