@@ -1,8 +1,9 @@
 //! NFF import: the SPD scenes load, entities map onto raybook's scene, bad
 //! files are refused with the line, and the BVH sees what brute force sees.
 
+use ch03_lambert::{Arrival, arrival};
 use raybook::nff;
-use raybook::toolkit::scene::{Light, Shape, TraceSpec};
+use raybook::toolkit::scene::{Falloff, Light, Shape, TraceSpec};
 use raybook::toolkit::snapshot::workspace_root;
 use raybook::toolkit::{Color, Scene, SceneError, Vec3};
 use raybook::tracer::{Termination, World, render_complete};
@@ -67,25 +68,49 @@ fn every_entity_maps_onto_the_scene() {
 }
 
 #[test]
-fn a_light_without_colour_gets_an_equal_share_at_the_at_point() {
+fn a_light_without_colour_gets_the_spd_generators_grey_and_no_falloff() {
     let scene = nff::parse(GOOD, "good.nff").unwrap();
     let Light::Point {
-        position,
         color,
         intensity,
+        falloff,
         ..
     } = scene.lights[0]
     else {
         panic!("NFF lights are point lights");
     };
-    // Two lights: half of white each, as bright at `at` as NFF's unattenuated light.
-    assert_eq!(color, Color::splat(0.5));
-    let at_the_at_point = intensity / position.distance_squared(scene.camera.look_at);
-    assert!((at_the_at_point - 1.0).abs() < 1e-6);
+    // Two lights: 1/√2 each, as the SPD generators write them for POV-Ray.
+    assert_eq!(color, Color::splat(0.5f32.sqrt()));
+    assert_eq!((intensity, falloff), (1.0, Falloff::None));
     let Light::Point { color, .. } = scene.lights[1] else {
         panic!()
     };
     assert_eq!(color, Color::splat(0.5), "its own colour");
+}
+
+#[test]
+fn an_nff_light_is_as_bright_near_as_far() {
+    let scene = nff::parse(GOOD, "good.nff").unwrap();
+    let light = &scene.lights[0];
+    let irradiance = |point: Vec3| match arrival(light, point) {
+        Arrival::Incoming(incoming) => incoming.irradiance,
+        other => panic!("{other:?}"),
+    };
+    let (near, far) = (irradiance(Vec3::new(4.0, 3.0, 1.0)), irradiance(Vec3::ZERO));
+    assert_eq!(near, far, "1 and 5.4 away");
+    assert_eq!(near, Color::splat(0.5f32.sqrt()));
+    // The same light with the 1/r² of a TOML scene's point light.
+    let mut physical = light.clone();
+    if let Light::Point { falloff, .. } = &mut physical {
+        *falloff = Falloff::InverseSquare;
+    }
+    let Arrival::Incoming(far) = arrival(&physical, Vec3::new(4.0, 3.0, -2.0)) else {
+        panic!()
+    };
+    assert!(
+        (far.irradiance - near / 16.0).length() < 1e-6,
+        "4 away: 1/16"
+    );
 }
 
 #[test]

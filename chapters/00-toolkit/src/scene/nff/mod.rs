@@ -8,16 +8,19 @@
 //! | --- | --- |
 //! | `v` + `from`, `at`, `up`, `angle`, `hither`, `resolution` | camera and image size. `angle` spans the centres of the first and last pixel row, so vfov = 2·atan(tan(angle/2) / (1 − 1/height)) (vfov = angle for one row); `hither` is ignored (rays start at the eye) |
 //! | `b r g b` | background colour |
-//! | `l x y z [r g b]` | point light; without a colour, each of the n lights gets 1/n of a total of white |
+//! | `l x y z [r g b]` | point light without falloff; without a colour, each of the n lights is grey 1/√n, as the SPD generators make them for POV-Ray |
 //! | `f r g b Kd Ks Shine T ior` | material: colour = Kd·(r, g, b); reflectance = Ks (mirror, grey) and specular = Ks with shininess = Shine (the highlight); transparency = T; ior (ignored when T = 0) |
 //! | `s x y z r` | sphere |
 //! | `p n` + n corners | planar polygon, convex or not, cut into n − 2 compact triangles by ear clipping (`polygon.rs`) |
 //! | `pp n` + n corners with normals | the same, smooth: triangles with vertex normals |
 //! | `c` + base `x y z r` + apex `x y z r` (on the `c` line or two lines of their own) | cone or cylinder without caps: [`CONE_SEGMENTS`] segments of smooth triangles with the cone's exact normals (`cone.rs`); negative radii: only the inside is seen |
 //!
-//! NFF lights do not fall off with distance; raybook's point lights fall off
-//! with 1/r². Each light's intensity is therefore scaled by r₀², its distance
-//! to the camera's `at` point, so that it has its NFF brightness there. The
+//! NFF lights do not fall off with distance, so they become raybook point
+//! lights with [`Falloff::None`]. NFF leaves the brightness of a light
+//! without a colour open ("a useful intensity as desired"); the SPD
+//! generators write their POV-Ray scenes with n lights of colour 1/√n each
+//! ("for raytracers that don't scale the light intensity, we will do it for
+//! them"), and so does this reader, so that both pictures match. The
 //! highlight is Blinn–Phong (n·h)^Shine where SPD renderers use Phong's
 //! (r·v)^Shine, so highlights are somewhat wider. NFF has no ambient light.
 //!
@@ -32,7 +35,8 @@ use glam::Vec3;
 
 use super::rules::{self, has_area};
 use super::{
-    CameraSpec, ImageSpec, Light, Material, MaterialId, Object, Scene, SceneError, Shape, TraceSpec,
+    CameraSpec, Falloff, ImageSpec, Light, Material, MaterialId, Object, Scene, SceneError, Shape,
+    TraceSpec,
 };
 use crate::Color;
 use reader::{Line, Reader};
@@ -244,15 +248,15 @@ impl Nff {
             let message = "the file has no viewpoint (a `v` entity)";
             return Err(reader.error(&reader.end(), 1, message));
         };
-        // Equal shares of white for the lights without a colour.
-        let share = 1.0 / self.lights.len().max(1) as f32;
+        // The SPD generators' grey for n lights without a colour: 1/√n.
+        let grey = 1.0 / (self.lights.len().max(1) as f32).sqrt();
         let lights = (self.lights.iter())
             .map(|&(position, colour)| Light::Point {
                 position,
-                color: colour.unwrap_or(Color::splat(share)),
-                // 1/r² falloff, calibrated to be 1 at the `at` point.
-                intensity: (position.distance_squared(camera.look_at)).max(f32::MIN_POSITIVE),
+                color: colour.unwrap_or(Color::splat(grey)),
+                intensity: 1.0,
                 shadows: true,
+                falloff: Falloff::None,
             })
             .collect();
         Ok(Scene {
