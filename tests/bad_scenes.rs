@@ -373,3 +373,21 @@ fn samples_that_are_not_a_square_number() {
     let e = broken("height = 48", "height = 48\nsamples = 5");
     assert_error(&e, 11, "image.samples", &["square number", "found 5"]);
 }
+
+#[test]
+fn a_point_light_says_its_falloff_in_words() {
+    let from = "intensity = 40.0";
+    let e = broken(from, "intensity = 40.0\nfalloff = \"linear\"");
+    assert_error(
+        &e,
+        line_of("falloff", from, "intensity = 40.0\nfalloff = \"linear\""),
+        "lights[0].falloff",
+        &["linear", "inverse_square", "none"],
+    );
+    let good = GOOD.replacen(from, "intensity = 40.0\nfalloff = \"none\"", 1);
+    let scene = Scene::parse(&good, "good.toml").unwrap();
+    let raybook::toolkit::scene::Light::Point { falloff, .. } = scene.lights[0] else {
+        panic!("a point light");
+    };
+    assert_eq!(falloff, raybook::toolkit::scene::Falloff::None);
+}

@@ -116,6 +116,7 @@ fn a_black_mirror_asks_for_no_shadow_ray() {
         color: raybook::toolkit::Vec3::ONE,
         intensity: 5.0,
         shadows: true,
+        falloff: raybook::toolkit::scene::Falloff::InverseSquare,
     });
     let s = stats(&scene);
     assert!(s.reflection > 0);

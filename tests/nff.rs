@@ -1,8 +1,9 @@
 //! NFF import: the SPD scenes load, entities map onto raybook's scene, bad
 //! files are refused with the line, and the BVH sees what brute force sees.
 
+use ch03_lambert::{Arrival, arrival};
 use raybook::nff;
-use raybook::toolkit::scene::{Light, Shape, TraceSpec};
+use raybook::toolkit::scene::{Falloff, Light, Shape, TraceSpec};
 use raybook::toolkit::snapshot::workspace_root;
 use raybook::toolkit::{Color, Scene, SceneError, Vec3};
 use raybook::tracer::{Termination, World, render_complete};
@@ -67,25 +68,49 @@ fn every_entity_maps_onto_the_scene() {
 }
 
 #[test]
-fn a_light_without_colour_gets_an_equal_share_at_the_at_point() {
+fn a_light_without_colour_gets_the_spd_generators_grey_and_no_falloff() {
     let scene = nff::parse(GOOD, "good.nff").unwrap();
     let Light::Point {
-        position,
         color,
         intensity,
+        falloff,
         ..
     } = scene.lights[0]
     else {
         panic!("NFF lights are point lights");
     };
-    // Two lights: half of white each, as bright at `at` as NFF's unattenuated light.
-    assert_eq!(color, Color::splat(0.5));
-    let at_the_at_point = intensity / position.distance_squared(scene.camera.look_at);
-    assert!((at_the_at_point - 1.0).abs() < 1e-6);
+    // Two lights: 1/√2 each, as the SPD generators write them for POV-Ray.
+    assert_eq!(color, Color::splat(0.5f32.sqrt()));
+    assert_eq!((intensity, falloff), (1.0, Falloff::None));
     let Light::Point { color, .. } = scene.lights[1] else {
         panic!()
     };
     assert_eq!(color, Color::splat(0.5), "its own colour");
+}
+
+#[test]
+fn an_nff_light_is_as_bright_near_as_far() {
+    let scene = nff::parse(GOOD, "good.nff").unwrap();
+    let light = &scene.lights[0];
+    let irradiance = |point: Vec3| match arrival(light, point) {
+        Arrival::Incoming(incoming) => incoming.irradiance,
+        other => panic!("{other:?}"),
+    };
+    let (near, far) = (irradiance(Vec3::new(4.0, 3.0, 1.0)), irradiance(Vec3::ZERO));
+    assert_eq!(near, far, "1 and 5.4 away");
+    assert_eq!(near, Color::splat(0.5f32.sqrt()));
+    // The same light with the 1/r² of a TOML scene's point light.
+    let mut physical = light.clone();
+    if let Light::Point { falloff, .. } = &mut physical {
+        *falloff = Falloff::InverseSquare;
+    }
+    let Arrival::Incoming(far) = arrival(&physical, Vec3::new(4.0, 3.0, -2.0)) else {
+        panic!()
+    };
+    assert!(
+        (far.irradiance - near / 16.0).length() < 1e-6,
+        "4 away: 1/16"
+    );
 }
 
 #[test]
@@ -97,6 +122,15 @@ fn the_spd_scenes_load_with_their_primitives() {
     assert_eq!(count("tetra-6.nff"), 4096);
     assert_eq!(count("mount-3.nff"), 128 + 4);
     assert!(count("teapot-2.nff") > 240);
+    // The seven generators at their default sizes. gears: 9217 quads of
+    // two triangles and 128 tooth outlines of 144 corners, 142 triangles each.
+    assert_eq!(count("gears-4.nff"), 9217 * 2 + 128 * 142);
+    assert_eq!(count("mount-6.nff"), 8192 + 4);
+    // rings and tree: spheres, cones of 2 triangles per segment, a floor.
+    let cones = 2 * nff::CONE_SEGMENTS;
+    assert_eq!(count("rings-7.nff"), 4200 * (cones + 1) + 2);
+    assert_eq!(count("tree-11.nff"), 4095 * (cones + 1) + 2);
+    assert_eq!(count("teapot-6.nff"), 36 * 2 + 2256);
 }
 
 fn broken(text: &str) -> SceneError {
@@ -120,7 +154,12 @@ fn bad_files_are_refused_with_the_line() {
         (13, "s 0 0 0 -1", 13, "radius"),
         (13, "s 0 0 zero 1", 13, "`zero`"),
         (13, "s 0 0 0", 13, "found 3 numbers"),
-        (13, "c", 13, "cones and cylinders"),
+        (13, "c 0 0 0 1 0 0 1", 13, "found 7 numbers"),
+        (13, "c 0 0 0 1 0 0 0 1", 13, "coincide"),
+        (13, "c 0 0 0 -1 0 0 1 1", 13, "negative only if both are"),
+        (13, "c 0 0 0 1 0 0 1 -1", 13, "negative only if both are"),
+        (13, "c 0 0 0 0 0 0 1 0", 13, "radius > 0"),
+        (13, "c 0 0 0 nan 0 0 1 1", 13, "`nan`"),
         (13, "cube 1", 13, "unknown entity `cube`"),
         (12, "f 1 0.5 0.25 1.8 0.4 30 0.5 1.5", 12, "Kd"),
         (
@@ -191,13 +230,180 @@ fn structural_mistakes_are_refused_too() {
     assert!(e.message.contains("zero area"), "{e}");
 }
 
+/// The objects of GOOD's material and viewpoint followed by `objects`.
+fn shapes_of(objects: &str) -> Vec<Shape> {
+    let text = format!("{}{objects}", &GOOD[..GOOD.find("s 0 0 0 1").unwrap()]);
+    let scene = nff::parse(&text, "shapes.nff").unwrap_or_else(|e| panic!("{e}"));
+    scene.objects.iter().map(|o| o.shape).collect()
+}
+
+/// The corners and corner normals of a smooth triangle.
+fn smooth(shape: &Shape) -> ([Vec3; 3], [Vec3; 3]) {
+    match *shape {
+        Shape::SmoothTriangle { vertices, normals } => (vertices, normals),
+        other => panic!("a cone is made of smooth triangles, found {other:?}"),
+    }
+}
+
+/// (b − a) × (c − a): the normal of a triangle's winding, twice its area long.
+fn area_vector([a, b, c]: [Vec3; 3]) -> Vec3 {
+    (b - a).cross(c - a)
+}
+
+#[test]
+fn a_cylinder_is_a_band_of_smooth_triangles_with_its_exact_normals() {
+    // NFF's form: `c`, then the base and the apex on lines of their own.
+    let shapes = shapes_of("c\n1 2 0 0.5\n1 2 3 0.5\n");
+    assert_eq!(shapes.len(), 2 * nff::CONE_SEGMENTS, "two per segment");
+    let axis = Vec3::new(1.0, 2.0, 0.0);
+    for shape in &shapes {
+        let (vertices, normals) = smooth(shape);
+        for (v, n) in vertices.iter().zip(normals) {
+            let radial = (*v - axis) * Vec3::new(1.0, 1.0, 0.0);
+            assert!((radial.length() - 0.5).abs() < 1e-5, "{v} on the surface");
+            assert!(v.z == 0.0 || v.z == 3.0, "{v} on an end circle");
+            assert!((n.length() - 1.0).abs() < 1e-5, "unit normal {n}");
+            assert!(n.z.abs() < 1e-6, "perpendicular to the axis: {n}");
+            assert!(
+                (n - radial / 0.5).length() < 1e-5,
+                "{n} points out from {v}"
+            );
+        }
+        // Counter-clockwise seen from outside: the winding's normal points out.
+        let centroid = vertices.iter().sum::<Vec3>() / 3.0;
+        assert!(
+            area_vector(vertices).dot(centroid - axis) > 0.0,
+            "{vertices:?}"
+        );
+    }
+}
+
+#[test]
+fn a_pointed_cone_tilts_its_normals_and_may_stand_on_one_line() {
+    // The SPD generators' form: all eight numbers on the `c` line. Radius 1
+    // to 0 over height 1: the normals tilt by (1 − 0)/1 along the axis, 45°.
+    let shapes = shapes_of("c 0 0 0 1 0 0 1 0\n");
+    assert_eq!(shapes.len(), nff::CONE_SEGMENTS, "one triangle per segment");
+    let apex = Vec3::Z;
+    for shape in &shapes {
+        let (vertices, normals) = smooth(shape);
+        for (v, n) in vertices.iter().zip(normals) {
+            assert!((n.length() - 1.0).abs() < 1e-5, "unit normal {n}");
+            assert!((n.z - 0.5f32.sqrt()).abs() < 1e-5, "45° tilt: {n}");
+            if *v != apex {
+                assert!(n.dot(apex - *v).abs() < 1e-5, "{n} ⊥ the side at {v}");
+            }
+        }
+        assert!(area_vector(vertices).z > 0.0, "faces out and up");
+    }
+}
+
+#[test]
+fn negative_radii_turn_a_cone_inside_out() {
+    let outside = shapes_of("c 0 0 0 1 0 0 2 0.5\n");
+    let inside = shapes_of("c 0 0 0 -1 0 0 2 -0.5\n");
+    assert_eq!(outside.len(), inside.len());
+    for (o, i) in outside.iter().zip(&inside) {
+        let ((ov, on), (iv, inn)) = (smooth(o), smooth(i));
+        let mut o_sorted = ov.map(|v| v.to_array());
+        let mut i_sorted = iv.map(|v| v.to_array());
+        o_sorted.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        i_sorted.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        assert_eq!(o_sorted, i_sorted, "the same triangle");
+        assert!(
+            area_vector(iv).dot(area_vector(ov)) < 0.0,
+            "wound the other way"
+        );
+        let out: Vec3 = on.iter().sum();
+        assert!(inn.iter().all(|n| n.dot(out) < 0.0), "normals point in");
+    }
+}
+
+#[test]
+fn a_cone_that_ends_early_names_its_line() {
+    let e = broken(&format!(
+        "{}c\n0 0 0 1\n",
+        &GOOD[..GOOD.find("s 0 0 0 1").unwrap()]
+    ));
+    assert!(e.message.contains("the apex of the cone"), "{e}");
+    assert_eq!(e.line, Some(13));
+    let e = broken(&with_line(13, "c\n0 0 0 1\n0 0 1 -1"));
+    assert_eq!(e.line, Some(15), "the apex's line");
+    assert_eq!(e.column, Some(7), "at the radius");
+}
+
+/// Checks that the triangles of a polygon cover it exactly: as many as a
+/// triangulation has (n − 2), each wound as the polygon is (so none is
+/// flipped, as a fan's are outside a concave corner), and together as large
+/// as the polygon (so none overlaps another or pokes out).
+fn covers_exactly(corners: &[[f32; 2]]) -> Vec<[Vec3; 3]> {
+    let lines: Vec<String> = corners.iter().map(|[x, y]| format!("{x} {y} 0")).collect();
+    let shapes = shapes_of(&format!("p {}\n{}\n", corners.len(), lines.join("\n")));
+    let triangles: Vec<[Vec3; 3]> = (shapes.iter())
+        .map(|s| match *s {
+            Shape::Triangle { vertices } => vertices,
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(triangles.len(), corners.len() - 2);
+    // The shoelace formula: the polygon's area, positive if counter-clockwise.
+    let n = corners.len();
+    let area: f32 = (0..n)
+        .map(|i| {
+            let ([x0, y0], [x1, y1]) = (corners[i], corners[(i + 1) % n]);
+            (x0 * y1 - x1 * y0) / 2.0
+        })
+        .sum();
+    assert!(area > 0.0, "the test's polygons are counter-clockwise");
+    let mut covered = 0.0;
+    for t in &triangles {
+        let z = area_vector(*t).z / 2.0;
+        assert!(z > 0.0, "{t:?} is wound against the polygon");
+        covered += z;
+    }
+    assert!((covered - area).abs() < 1e-4 * area, "{covered} ≠ {area}");
+    triangles
+}
+
+#[test]
+fn concave_polygons_are_cut_into_triangles_inside_them() {
+    // An L, starting at a corner from which a fan would leave the L.
+    covers_exactly(&[
+        [2.0, 0.0],
+        [2.0, 1.0],
+        [1.0, 1.0],
+        [1.0, 2.0],
+        [0.0, 2.0],
+        [0.0, 0.0],
+    ]);
+    // A five-pointed star, starting at a tip.
+    let star: Vec<[f32; 2]> = (0..10)
+        .map(|i| {
+            let angle = std::f32::consts::TAU * i as f32 / 10.0;
+            let r = if i % 2 == 0 { 1.0 } else { 0.4 };
+            [r * angle.cos(), r * angle.sin()]
+        })
+        .collect();
+    covers_exactly(&star);
+}
+
+#[test]
+fn polygons_are_cut_into_compact_triangles() {
+    // A long thin rhombus: the fan from the first corner cuts it along its
+    // long diagonal into two slivers; the short diagonal is the better cut.
+    let triangles = covers_exactly(&[[0.0, 0.0], [10.0, -1.0], [20.0, 0.0], [10.0, 1.0]]);
+    for t in triangles {
+        assert!(t.contains(&Vec3::new(10.0, -1.0, 0.0)) && t.contains(&Vec3::new(10.0, 1.0, 0.0)));
+    }
+}
+
 /// Renders with the complete tracer against `world`.
 fn render(scene: &Scene, world: &(impl World + ?Sized)) -> raybook::toolkit::Image {
     render_complete(scene, world, Termination::of(scene), || {}).0
 }
 
-#[test]
-fn bvh_and_brute_force_give_the_same_picture_on_the_spd_scenes() {
+/// The NFF scenes of scenes/spd, sorted.
+fn spd_scenes() -> Vec<std::path::PathBuf> {
     let dir = workspace_root().join("scenes/spd");
     let mut names: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
@@ -205,9 +411,55 @@ fn bvh_and_brute_force_give_the_same_picture_on_the_spd_scenes() {
         .filter(|p| p.extension().is_some_and(|e| e == "nff"))
         .collect();
     names.sort();
+    names
+}
+
+#[test]
+fn every_spd_generator_is_there_at_its_default_size_and_renders() {
+    let names = spd_scenes();
+    let defaults = [
+        "balls-4", "gears-4", "mount-6", "rings-7", "teapot-6", "tetra-6", "tree-11",
+    ];
+    for name in defaults {
+        assert!(
+            names.iter().any(|p| p.ends_with(format!("{name}.nff"))),
+            "{name}"
+        );
+        let pov = workspace_root().join(format!("scenes/spd/{name}.pov"));
+        assert!(pov.is_file(), "{} for POV-Ray", pov.display());
+    }
+    for path in names {
+        let scene = nff::load(&path).unwrap().with_size(32, 32);
+        let bvh = ch08_bvh::Bvh::build(&scene.objects);
+        let image = render(&scene, &bvh);
+        assert!(
+            image.pixels.iter().all(|c| c.is_finite()),
+            "{}",
+            path.display()
+        );
+        let lit = image
+            .pixels
+            .iter()
+            .filter(|&&c| c != scene.image.background);
+        assert!(
+            lit.count() > 32 * 32 / 10,
+            "{} shows its objects",
+            path.display()
+        );
+    }
+}
+
+#[test]
+fn bvh_and_brute_force_give_the_same_picture_on_the_spd_scenes() {
+    let names = spd_scenes();
     assert!(names.len() >= 7, "{names:?}");
     for path in names {
         let scene = nff::load(&path).unwrap();
+        // Brute force over the 270 000 triangles of rings and tree takes
+        // too long for the suite; the test above renders them with the BVH.
+        if scene.objects.len() > 50_000 {
+            continue;
+        }
         // Brute force is slow on thousands of primitives: a small picture.
         let side = if scene.objects.len() > 1000 { 24 } else { 64 };
         let scene = scene.with_size(side, side);
@@ -273,4 +525,11 @@ fn the_render_arguments_read_nff_with_every_override() {
     let image = scene.image;
     assert_eq!((image.width, image.height, image.samples), (8, 6, 4));
     assert!(name.ends_with("balls-1.nff"), "{name}");
+}
+
+#[test]
+fn a_cone_beyond_f32_is_refused_not_drawn_with_nan() {
+    // The axis is shorter than f32 can divide by: the tilt overflows.
+    let e = broken(&with_line(13, "c 0 0 0 1 0 0 1e-44 2"));
+    assert!(e.message.contains("too thin, too short"), "{e}");
 }

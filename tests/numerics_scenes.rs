@@ -9,7 +9,7 @@ mod common;
 
 use proptest::prelude::*;
 use raybook::render;
-use raybook::toolkit::scene::{Light, Object, Shape};
+use raybook::toolkit::scene::{Falloff, Light, Object, Shape};
 use raybook::toolkit::snapshot;
 use raybook::toolkit::{Scene, Vec3};
 use raybook::tracer::{
@@ -283,6 +283,7 @@ fn a_light_on_a_surface_or_inside_an_object_is_finite() {
             color: Vec3::ONE,
             intensity: 5.0,
             shadows: true,
+            falloff: Falloff::InverseSquare,
         });
     }
     let (image, _) = render(&scene, || {});

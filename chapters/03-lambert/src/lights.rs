@@ -1,6 +1,6 @@
 //! Light arriving at a point: from where, and how much.
 
-use crate::toolkit::scene::Light;
+use crate::toolkit::scene::{Falloff, Light};
 use crate::toolkit::{Color, Vec3};
 
 /// Light from a point or spot light arriving at a point of a surface.
@@ -11,7 +11,8 @@ pub struct Incoming {
     pub direction: Vec3,
     /// Distance from the surface point to the light.
     pub distance: f32,
-    /// Colour × intensity / r², times the spot's cone factor: the
+    /// Colour × intensity / r² (no 1/r² for a light without falloff),
+    /// times the spot's cone factor: the
     /// *irradiance* the light gives a surface at distance r that faces it
     /// (at normal incidence), per channel; the lecture's I_L. Lambert's law
     /// multiplies it by cos θ for a surface at angle θ.
@@ -35,8 +36,9 @@ pub enum Arrival {
 ///
 /// A point light of intensity I at distance r gives the irradiance
 /// colour × I / r² to a surface facing it: its power spreads over a sphere
-/// whose area grows with r². A spot light is a point light times
-/// [`spot_factor`].
+/// whose area grows with r² (or colour × I at any distance, if the light
+/// says it has no falloff: see [`attenuation`]). A spot light is a point light
+/// times [`spot_factor`].
 // Asked for every light at every hit. Inlined into the tracer's loop over
 // the lights, the point and the answer stay in registers; called, both go
 // through memory. The complete tracer's `trace` is compiled in other
@@ -52,7 +54,8 @@ pub fn arrival(light: &Light, point: Vec3) -> Arrival {
             color,
             intensity,
             shadows,
-        } => from_point(position, color * intensity, shadows, point),
+            falloff,
+        } => from_point(position, color * intensity, falloff, shadows, point),
         Light::Spot {
             position,
             direction,
@@ -62,8 +65,9 @@ pub fn arrival(light: &Light, point: Vec3) -> Arrival {
             outer_degrees,
             shadows,
         } => {
+            let falloff = Falloff::InverseSquare;
             let Arrival::Incoming(mut incoming) =
-                from_point(position, color * intensity, shadows, point)
+                from_point(position, color * intensity, falloff, shadows, point)
             else {
                 return Arrival::Dark;
             };
@@ -77,8 +81,15 @@ pub fn arrival(light: &Light, point: Vec3) -> Arrival {
     }
 }
 
-/// Light of strength `power` from `position`, falling off with 1/r².
-fn from_point(position: Vec3, power: Color, casts_shadows: bool, point: Vec3) -> Arrival {
+/// Light of strength `power` from `position`, falling off with distance as
+/// `falloff` says (1/r² for a physical light).
+fn from_point(
+    position: Vec3,
+    power: Color,
+    falloff: Falloff,
+    casts_shadows: bool,
+    point: Vec3,
+) -> Arrival {
     let to_light = position - point;
     let distance = to_light.length();
     if distance == 0.0 {
@@ -87,9 +98,19 @@ fn from_point(position: Vec3, power: Color, casts_shadows: bool, point: Vec3) ->
     Arrival::Incoming(Incoming {
         direction: to_light / distance,
         distance,
-        irradiance: power / (distance * distance),
+        irradiance: power * attenuation(falloff, distance),
         casts_shadows,
     })
+}
+
+/// How much of a point light's strength arrives at `distance` r from it:
+/// 1/r² for [`Falloff::InverseSquare`], 1 for [`Falloff::None`] (NFF's
+/// lights, which are as bright everywhere).
+fn attenuation(falloff: Falloff, distance: f32) -> f32 {
+    match falloff {
+        Falloff::InverseSquare => 1.0 / (distance * distance),
+        Falloff::None => 1.0,
+    }
 }
 
 /// How much of a spot light goes out along `ray` (a unit vector from the

@@ -428,12 +428,14 @@ fn colours_are_clamped_when_written() {
             position,
             color,
             shadows,
+            falloff,
             ..
         } => Light::Point {
             position,
             color,
             intensity: 1e4,
             shadows,
+            falloff,
         },
         other => other,
     };

@@ -1,7 +1,7 @@
 //! Which scenes the forward tracer can render so that they converge to
 //! chapter 4's picture.
 
-use ch04_shadows::toolkit::scene::Light;
+use ch04_shadows::toolkit::scene::{Falloff, Light};
 use ch04_shadows::toolkit::{Color, Scene};
 
 /// Can the forward tracer render this scene so that it converges to chapter
@@ -14,6 +14,12 @@ pub fn check_scene(scene: &Scene) -> Result<(), String> {
     let mut problems = Vec::new();
     for (i, light) in scene.lights.iter().enumerate() {
         match light {
+            Light::Point {
+                falloff: Falloff::None,
+                ..
+            } => problems.push(format!(
+                "lights[{i}] has falloff = \"none\": photons spread out, so their light falls off with 1/r²"
+            )),
             Light::Point { shadows: true, .. } => {}
             Light::Point { .. } => problems.push(format!(
                 "lights[{i}] has shadows = false: its light would pass through objects"

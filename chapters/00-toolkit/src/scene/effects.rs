@@ -6,7 +6,7 @@
 
 use std::fmt;
 
-use super::{Effect, Light, Scene};
+use super::{Effect, Falloff, Light, Scene};
 
 impl Effect {
     /// Every effect, in the order the chapters introduce them.
@@ -188,6 +188,7 @@ impl Scene {
                     color: *color,
                     intensity: *intensity,
                     shadows: *shadows,
+                    falloff: Falloff::InverseSquare,
                 };
             }
             if let (true, Light::Point { shadows, .. } | Light::Spot { shadows, .. }) =

@@ -123,13 +123,14 @@ pub type MaterialId = usize;
 pub enum Light {
     /// Constant light, equal everywhere, never blocked.
     Ambient { color: Color },
-    /// Light from a point, falling off with 1/r².
+    /// Light from a point, falling off with 1/r² (or not at all: see [`Falloff`]).
     Point {
         position: Vec3,
         color: Color,
         intensity: f32,
         /// Does this light cast shadows (chapter 4)?
         shadows: bool,
+        falloff: Falloff,
     },
     /// A point light limited to a cone around `direction`, with a smooth
     /// edge between the inner and the outer half-angle.
@@ -143,6 +144,20 @@ pub enum Light {
         outer_degrees: f32,
         shadows: bool,
     },
+}
+
+/// How a point light's light weakens with the distance r from it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Falloff {
+    /// 1/r², as light from a point does: its power spreads over a sphere
+    /// whose area grows with r².
+    #[default]
+    InverseSquare,
+    /// Not at all: as bright at any distance. Not physical, but it is how
+    /// the Neutral File Format (NFF) defines its lights, and what POV-Ray's
+    /// lights do unless they say `fade_power`.
+    None,
 }
 
 /// A shape with its material.

@@ -17,7 +17,7 @@ use super::values::{
     Positive, Rgb, Samples, Side, Xyz,
 };
 use crate::Color;
-use crate::scene::{Effect, TraceSpec};
+use crate::scene::{Effect, Falloff, TraceSpec};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -134,11 +134,12 @@ pub(super) struct LightFile {
     pub inner_angle: Option<HalfAngle>,
     pub outer_angle: Option<HalfAngle>,
     pub shadows: Option<bool>,
+    pub falloff: Option<Falloff>,
 }
 
 impl LightFile {
     /// The optional fields in file order, and whether each is set.
-    pub fn fields_set(&self) -> [(&'static str, bool); 7] {
+    pub fn fields_set(&self) -> [(&'static str, bool); 8] {
         [
             ("color", self.color.is_some()),
             ("intensity", self.intensity.is_some()),
@@ -147,6 +148,7 @@ impl LightFile {
             ("inner_angle", self.inner_angle.is_some()),
             ("outer_angle", self.outer_angle.is_some()),
             ("shadows", self.shadows.is_some()),
+            ("falloff", self.falloff.is_some()),
         ]
     }
 }

@@ -258,13 +258,14 @@ fn ambient_light(l: &LightFile, r: &Record) -> Result<Light, SceneError> {
 }
 
 fn point_light(l: &LightFile, r: &Record) -> Result<Light, SceneError> {
-    let takes = ["position", "color", "intensity", "shadows"];
+    let takes = ["position", "color", "intensity", "shadows", "falloff"];
     r.refuse(&l.fields_set(), "point light", &takes)?;
     Ok(Light::Point {
         position: r.need(l.position.map(|p| p.0), "position", "point light")?,
         color: color(l),
         intensity: intensity(l),
         shadows: l.shadows.unwrap_or(true),
+        falloff: l.falloff.unwrap_or_default(),
     })
 }
 

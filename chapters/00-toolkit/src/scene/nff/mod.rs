@@ -8,16 +8,19 @@
 //! | --- | --- |
 //! | `v` + `from`, `at`, `up`, `angle`, `hither`, `resolution` | camera and image size. `angle` spans the centres of the first and last pixel row, so vfov = 2·atan(tan(angle/2) / (1 − 1/height)) (vfov = angle for one row); `hither` is ignored (rays start at the eye) |
 //! | `b r g b` | background colour |
-//! | `l x y z [r g b]` | point light; without a colour, each of the n lights gets 1/n of a total of white |
+//! | `l x y z [r g b]` | point light without falloff; without a colour, each of the n lights is grey 1/√n, as the SPD generators make them for POV-Ray |
 //! | `f r g b Kd Ks Shine T ior` | material: colour = Kd·(r, g, b); reflectance = Ks (mirror, grey) and specular = Ks with shininess = Shine (the highlight); transparency = T; ior (ignored when T = 0) |
 //! | `s x y z r` | sphere |
-//! | `p n` + n corners | convex polygon, split into the fan of triangles from its first corner |
+//! | `p n` + n corners | planar polygon, convex or not, cut into n − 2 compact triangles by ear clipping (`polygon.rs`) |
 //! | `pp n` + n corners with normals | the same, smooth: triangles with vertex normals |
-//! | `c` (cone or cylinder) | refused, naming the line |
+//! | `c` + base `x y z r` + apex `x y z r` (on the `c` line or two lines of their own) | cone or cylinder without caps: [`CONE_SEGMENTS`] segments of smooth triangles with the cone's exact normals (`cone.rs`); negative radii: only the inside is seen |
 //!
-//! NFF lights do not fall off with distance; raybook's point lights fall off
-//! with 1/r². Each light's intensity is therefore scaled by r₀², its distance
-//! to the camera's `at` point, so that it has its NFF brightness there. The
+//! NFF lights do not fall off with distance, so they become raybook point
+//! lights with [`Falloff::None`]. NFF leaves the brightness of a light
+//! without a colour open ("a useful intensity as desired"); the SPD
+//! generators write their POV-Ray scenes with n lights of colour 1/√n each
+//! ("for raytracers that don't scale the light intensity, we will do it for
+//! them"), and so does this reader, so that both pictures match. The
 //! highlight is Blinn–Phong (n·h)^Shine where SPD renderers use Phong's
 //! (r·v)^Shine, so highlights are somewhat wider. NFF has no ambient light.
 //!
@@ -32,13 +35,18 @@ use glam::Vec3;
 
 use super::rules::{self, has_area};
 use super::{
-    CameraSpec, ImageSpec, Light, Material, MaterialId, Object, Scene, SceneError, Shape, TraceSpec,
+    CameraSpec, Falloff, ImageSpec, Light, Material, MaterialId, Object, Scene, SceneError, Shape,
+    TraceSpec,
 };
 use crate::Color;
 use reader::{Line, Reader};
 
+mod cone;
+mod polygon;
 mod reader;
 mod viewpoint;
+
+pub use cone::SEGMENTS as CONE_SEGMENTS;
 
 /// Is `path` an NFF file, by its name (`.nff`, in any case)?
 pub fn is_nff(path: &Path) -> bool {
@@ -78,7 +86,7 @@ struct Nff {
 
 impl Nff {
     /// Reads the entity that starts on `line` (and the lines it takes).
-    fn entity(&mut self, line: &Line, reader: &mut Reader) -> Result<(), SceneError> {
+    fn entity<'a>(&mut self, line: &Line<'a>, reader: &mut Reader<'a>) -> Result<(), SceneError> {
         match line.keyword() {
             "v" => self.camera = Some(viewpoint::viewpoint(line, reader)?),
             "b" => self.background = color(reader, line, &reader.numbers(line, 3, "b r g b")?)?,
@@ -86,14 +94,7 @@ impl Nff {
             "f" => self.material(line, reader)?,
             "s" => self.sphere(line, reader)?,
             "p" | "pp" => self.polygon(line, reader)?,
-            "c" => {
-                return Err(reader.error(
-                    line,
-                    1,
-                    "cones and cylinders (`c`) are not supported by raybook; \
-                     replace the `c` entity and its two lines by polygons",
-                ));
-            }
+            "c" => self.cone(line, reader)?,
             other => {
                 return Err(reader.error(
                     line,
@@ -163,35 +164,66 @@ impl Nff {
         self.add(line, reader, shape)
     }
 
-    /// A `p` or `pp` polygon, as the fan of triangles (v0, vi, vi+1).
+    /// A `p` or `pp` polygon, cut into triangles by ear clipping
+    /// (`polygon.rs`), which is right for concave polygons too.
     fn polygon(&mut self, line: &Line, reader: &mut Reader) -> Result<(), SceneError> {
         let smooth = line.keyword() == "pp";
         let corners = polygon_corners(line, reader, smooth)?;
-        let mut added = 0;
-        for i in 1..corners.len() - 1 {
-            let [a, b, c] = [corners[0], corners[i], corners[i + 1]];
+        let points: Vec<Vec3> = corners.iter().map(|c| c.0).collect();
+        let mut shapes = Vec::with_capacity(corners.len() - 2);
+        for [a, b, c] in polygon::triangulate(&points)
+            .into_iter()
+            .map(|t| t.map(|i| corners[i]))
+        {
             let vertices = [a.0, b.0, c.0];
             if !has_area(vertices) {
-                continue; // a fan triangle of collinear corners: nothing to see
+                continue; // a triangle of collinear corners: nothing to see
             }
-            let shape = match smooth {
+            shapes.push(match smooth {
                 true => Shape::SmoothTriangle {
                     vertices,
                     normals: [a.1, b.1, c.1],
                 },
                 false => Shape::Triangle { vertices },
-            };
-            self.add(line, reader, shape)?;
-            added += 1;
+            });
         }
-        if added == 0 {
-            return Err(reader.error(
-                line,
-                1,
-                "the polygon has zero area (its corners lie on a line)",
-            ));
+        if shapes.is_empty() {
+            let message = "the polygon has zero area (its corners lie on a line)";
+            return Err(reader.error(line, 1, message));
         }
-        Ok(())
+        self.add_all(line, reader, shapes)
+    }
+
+    /// A `c` cone or cylinder, as smooth triangles (`cone.rs`).
+    fn cone<'a>(&mut self, line: &Line<'a>, reader: &mut Reader<'a>) -> Result<(), SceneError> {
+        let (base, apex, inside) = cone_ends(line, reader)?;
+        // A cone too thin, too short or too far out for f32 may have
+        // triangles without area, or normals that overflow.
+        let usable = |shape: &Shape| match *shape {
+            Shape::SmoothTriangle { vertices, normals } => {
+                has_area(vertices) && normals.iter().all(|n| n.is_finite())
+            }
+            _ => true,
+        };
+        let mut shapes = cone::tessellate(base, apex, inside);
+        shapes.retain(usable);
+        if shapes.is_empty() {
+            let message = "the cone is too thin, too short or too far out to measure in f32";
+            return Err(reader.error(line, 1, message));
+        }
+        self.add_all(line, reader, shapes)
+    }
+
+    /// Adds shapes with the current material.
+    fn add_all(
+        &mut self,
+        line: &Line,
+        reader: &Reader,
+        shapes: Vec<Shape>,
+    ) -> Result<(), SceneError> {
+        shapes
+            .into_iter()
+            .try_for_each(|shape| self.add(line, reader, shape))
     }
 
     /// Adds a shape with the current material.
@@ -216,15 +248,15 @@ impl Nff {
             let message = "the file has no viewpoint (a `v` entity)";
             return Err(reader.error(&reader.end(), 1, message));
         };
-        // Equal shares of white for the lights without a colour.
-        let share = 1.0 / self.lights.len().max(1) as f32;
+        // The SPD generators' grey for n lights without a colour: 1/√n.
+        let grey = 1.0 / (self.lights.len().max(1) as f32).sqrt();
         let lights = (self.lights.iter())
             .map(|&(position, colour)| Light::Point {
                 position,
-                color: colour.unwrap_or(Color::splat(share)),
-                // 1/r² falloff, calibrated to be 1 at the `at` point.
-                intensity: (position.distance_squared(camera.look_at)).max(f32::MIN_POSITIVE),
+                color: colour.unwrap_or(Color::splat(grey)),
+                intensity: 1.0,
                 shadows: true,
+                falloff: Falloff::None,
             })
             .collect();
         Ok(Scene {
@@ -279,6 +311,83 @@ fn polygon_corner(line: &Line, reader: &Reader, smooth: bool) -> Result<(Vec3, V
         return Err(reader.error(line, line.column(3), message));
     }
     Ok((Vec3::from_slice(&n[..3]), normal.normalize()))
+}
+
+/// The two ends of a `c` entity, and whether only its inside is seen.
+///
+/// The radii are both ≥ 0, one of them > 0; or, by NFF's rule, both
+/// negative, meaning that only the inside of the cone is visible.
+fn cone_ends<'a>(
+    line: &Line<'a>,
+    reader: &mut Reader<'a>,
+) -> Result<(cone::End, cone::End, bool), SceneError> {
+    let [base, apex] = cone_numbers(line, reader)?;
+    let (b, a) = (base.numbers, apex.numbers);
+    if b[..3] == a[..3] {
+        let message = "the base and the apex coincide: a cone needs an axis of non-zero length";
+        return Err(apex.error(reader, 0, message));
+    }
+    let inside = b[3] < 0.0 && a[3] < 0.0;
+    if !inside && b[3].min(a[3]) < 0.0 {
+        let wrong = if b[3] < 0.0 { &base } else { &apex };
+        let message = "a radius is negative only if both are (then only the inside is seen)";
+        return Err(wrong.error(reader, 3, message));
+    }
+    if b[3] == 0.0 && a[3] == 0.0 {
+        return Err(apex.error(reader, 3, "a cone needs a radius > 0 at one end at least"));
+    }
+    let end = |n: [f32; 4]| cone::End {
+        center: Vec3::new(n[0], n[1], n[2]),
+        radius: n[3].abs(),
+    };
+    Ok((end(b), end(a), inside))
+}
+
+/// The numbers `x y z radius` of one end of a cone, and where they are.
+struct ConeEnd<'a> {
+    line: Line<'a>,
+    /// The word of the line where they start.
+    first: usize,
+    numbers: [f32; 4],
+}
+
+impl ConeEnd<'_> {
+    /// An error at number `i` (0 to 3) of this end.
+    fn error(&self, reader: &Reader, i: usize, message: &str) -> SceneError {
+        reader.error(&self.line, self.line.column(self.first + i), message)
+    }
+}
+
+/// The base and the apex of a `c` entity. NFF writes `c` and then
+/// `base.x base.y base.z base_radius` and `apex.x apex.y apex.z apex_radius`
+/// on two lines of their own; the SPD generators write all eight numbers on
+/// the `c` line. Both are read.
+fn cone_numbers<'a>(
+    line: &Line<'a>,
+    reader: &mut Reader<'a>,
+) -> Result<[ConeEnd<'a>; 2], SceneError> {
+    let four = |n: &[f32]| [n[0], n[1], n[2], n[3]];
+    if line.words.len() > 1 {
+        let form = "c base.x base.y base.z base_radius apex.x apex.y apex.z apex_radius";
+        let n = reader.numbers(line, 8, form)?;
+        let end = |first: usize| ConeEnd {
+            line: line.clone(),
+            first,
+            numbers: four(&n[first - 1..]),
+        };
+        return Ok([end(1), end(5)]);
+    }
+    let mut end = |what: &str| {
+        let line = reader.expect_line(line, &format!("the {what} of the cone"))?;
+        let form = format!("{what}.x {what}.y {what}.z {what}_radius");
+        let n = reader.numbers_from(&line, 0, 4..=4, &form)?;
+        Ok(ConeEnd {
+            line,
+            first: 0,
+            numbers: four(&n),
+        })
+    };
+    Ok([end("base")?, end("apex")?])
 }
 
 /// A colour with components in [0, 1].
