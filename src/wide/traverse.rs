@@ -112,6 +112,9 @@ impl WideBvh<'_> {
 /// Pushes the lanes of `node` that the ray enters in [t_min, limit], the
 /// farthest first, so that the nearest is visited next and its hits can
 /// rule out the others.
+///
+/// The lanes go onto the stack as they come, then the (at most four) new
+/// entries are put in order where they are, by insertion sort.
 #[inline]
 fn push_nearest_last(
     node: &Node4,
@@ -121,12 +124,18 @@ fn push_nearest_last(
     stack: &mut ArrayVec<(Child, f32), STACK>,
 ) {
     let (near, mut mask) = node.enter(ray, t_min, limit);
-    let mut entered = ArrayVec::<(Child, f32), 4>::new();
+    let first = stack.len();
     while mask != 0 {
         let lane = mask.trailing_zeros() as usize;
         mask &= mask - 1;
-        entered.push((node.child(lane), near[lane]));
+        stack.push((node.child(lane), near[lane]));
     }
-    entered.sort_unstable_by(|a, b| b.1.total_cmp(&a.1));
-    stack.extend(entered);
+    let entered = &mut stack[first..];
+    for i in 1..entered.len() {
+        let mut j = i;
+        while j > 0 && entered[j - 1].1 < entered[j].1 {
+            entered.swap(j - 1, j);
+            j -= 1;
+        }
+    }
 }
