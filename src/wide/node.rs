@@ -6,7 +6,7 @@ use glam::Vec4;
 
 use ch08_bvh::Aabb;
 
-use super::primitive::PreparedRay;
+use crate::tracer::Ray;
 
 /// Chapter 8's factor that makes the slab test's far distance an upper
 /// bound of the exact one despite rounding (1 + 2γ₃).
@@ -82,15 +82,14 @@ impl Node4 {
     /// [t_min, t_max] (bit i for lane i).
     ///
     /// The ray's direction tells which face of each slab comes first
-    /// ([`PreparedRay::near_face`]), so the near and far distances need no
+    /// ([`Slabs::near_face`]), so the near and far distances need no
     /// min/max per slab, only across the three.
     #[inline]
-    pub fn enter(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> (Vec4, u32) {
+    pub fn enter(&self, ray: &Slabs, t_min: f32, t_max: f32) -> (Vec4, u32) {
         let slab = |axis: usize, face: usize| {
-            let plane = self.bounds[face + axis];
-            (plane - Vec4::splat(ray.ray.origin[axis])) * Vec4::splat(ray.inverse[axis])
+            (self.bounds[face + axis] - ray.origin[axis]) * ray.inverse[axis]
         };
-        let [nx, ny, nz] = ray.near_face.map(usize::from);
+        let [nx, ny, nz] = ray.near_face;
         let near = slab(0, nx)
             .max(slab(1, ny))
             .max(slab(2, nz))
@@ -98,5 +97,31 @@ impl Node4 {
         let far = slab(0, 3 - nx).min(slab(1, 3 - ny)).min(slab(2, 3 - nz)) * ROBUST_FAR;
         let far = far.min(Vec4::splat(t_max));
         (near, near.cmple(far).bitmask())
+    }
+}
+
+/// What the slab test needs of a ray, worked out once for all the nodes it
+/// visits, each coordinate in all four lanes.
+#[derive(Debug, Clone, Copy)]
+pub struct Slabs {
+    origin: [Vec4; 3],
+    /// 1/rd per coordinate (±∞ where rd has a zero).
+    inverse: [Vec4; 3],
+    /// For each axis, 0 if rd points up that axis (the box's min face is
+    /// met first), 3 if down (the max face is): where the near planes are
+    /// among a node's six bound vectors.
+    near_face: [usize; 3],
+}
+
+impl Slabs {
+    #[inline]
+    pub fn new(ray: &Ray) -> Slabs {
+        let inverse = ray.direction.recip();
+        let face = |i: f32| if i.is_sign_negative() { 3 } else { 0 };
+        Slabs {
+            origin: ray.origin.to_array().map(Vec4::splat),
+            inverse: inverse.to_array().map(Vec4::splat),
+            near_face: inverse.to_array().map(face),
+        }
     }
 }

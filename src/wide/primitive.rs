@@ -1,6 +1,10 @@
 //! What the wide BVH keeps of each object, and the ray prepared once for the
 //! many tests it will meet.
 
+use std::cell::OnceCell;
+
+use glam::{Mat3A, Vec3A};
+
 use crate::toolkit::Vec3;
 use crate::toolkit::scene::Shape;
 use crate::tracer::{Ray, intersect_sphere};
@@ -52,36 +56,34 @@ impl Primitive {
                 let t = intersect_sphere_quickly(center, radius, &ray.ray, t_min, t_max)?;
                 Some((t, Weights::NONE))
             }
-            Geometry::Triangle { vertices } => ray.shear.intersect(vertices, t_min, t_max),
+            Geometry::Triangle { vertices } => ray.shear().intersect(vertices, t_min, t_max),
         }
     }
 }
 
-/// A ray with what every box and triangle test would otherwise recompute:
-/// 1/rd for the slab test, and the shear of the watertight triangle test.
-#[derive(Debug, Clone, Copy)]
+/// A ray with what every triangle test would otherwise recompute: the
+/// shear of the watertight test (the box tests' part is [`Slabs`]).
+#[derive(Debug, Clone)]
 pub struct PreparedRay {
     pub ray: Ray,
-    /// 1/rd per coordinate (±∞ where rd has a zero).
-    pub inverse: Vec3,
-    /// For each axis, 0 if rd points up that axis (the box's min face is
-    /// met first), 3 if down (the max face is): where the near planes are
-    /// among a node's six bound vectors.
-    pub near_face: [u8; 3],
-    pub shear: Shear,
+    /// Worked out at the first triangle the ray meets: a ray that meets
+    /// only spheres never needs it.
+    shear: OnceCell<Shear>,
 }
 
 impl PreparedRay {
     #[inline]
     pub fn new(ray: &Ray) -> PreparedRay {
-        let inverse = ray.direction.recip();
-        let face = |i: f32| if i.is_sign_negative() { 3 } else { 0 };
         PreparedRay {
             ray: *ray,
-            inverse,
-            near_face: [face(inverse.x), face(inverse.y), face(inverse.z)],
-            shear: Shear::new(ray),
+            shear: OnceCell::new(),
         }
+    }
+
+    /// The triangle test's transform for this ray.
+    #[inline]
+    pub fn shear(&self) -> &Shear {
+        self.shear.get_or_init(|| Shear::new(&self.ray))
     }
 }
 
@@ -98,10 +100,10 @@ impl PreparedRay {
 /// by index, which costs a branch each time.
 #[derive(Debug, Clone, Copy)]
 pub struct Shear {
-    origin: Vec3,
-    x: Vec3,
-    y: Vec3,
-    z: Vec3,
+    origin: Vec3A,
+    /// The rows e_kx − sx·e_kz, e_ky − sy·e_kz and sz·e_kz (e_i the unit
+    /// vectors), so that x, y, z = rows · (p − r0).
+    rows: Mat3A,
 }
 
 impl Shear {
@@ -112,25 +114,25 @@ impl Shear {
         if d[kz] < 0.0 {
             std::mem::swap(&mut kx, &mut ky);
         }
-        // The rows e_kx − sx·e_kz, e_ky − sy·e_kz and sz·e_kz (e_i the unit
-        // vectors), built as arrays: indexing a Vec3 is a branch per index.
+        // Built as arrays: indexing a Vec3 is a branch per index.
         let (mut x, mut y, mut z) = ([0.0; 3], [0.0; 3], [0.0; 3]);
         (x[kx], x[kz]) = (1.0, -(d[kx] / d[kz]));
         (y[ky], y[kz]) = (1.0, -(d[ky] / d[kz]));
         z[kz] = 1.0 / d[kz];
+        let rows = Mat3A::from_cols_array_2d(&[x, y, z]).transpose();
         Shear {
-            origin: ray.origin,
-            x: Vec3::from_array(x),
-            y: Vec3::from_array(y),
-            z: Vec3::from_array(z),
+            origin: ray.origin.into(),
+            rows,
         }
     }
 
-    /// A corner in the ray's space: x, y across the ray, z along it.
+    /// A corner in the ray's space: x, y across the ray, z along it. The
+    /// matrix product sums each row's three products left to right, as a
+    /// dot product does, in four lanes at once.
     #[inline]
     fn project(&self, p: Vec3) -> (f32, f32, f32) {
-        let p = p - self.origin;
-        (self.x.dot(p), self.y.dot(p), self.z.dot(p))
+        let p = self.rows * (Vec3A::from(p) - self.origin);
+        (p.x, p.y, p.z)
     }
 
     /// Chapter 2's `intersect_triangle`, the same operations in the same

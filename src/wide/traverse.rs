@@ -5,8 +5,8 @@ use arrayvec::ArrayVec;
 use ch08_bvh::MAX_DEPTH;
 
 use super::WideBvh;
-use super::node::{Child, Node4};
-use super::primitive::{PreparedRay, Weights};
+use super::node::{Child, Node4, Slabs};
+use super::primitive::{PreparedRay, Primitive, Weights};
 
 /// Room for the lanes still to visit: each level down pops one entry and
 /// pushes at most four, and no path is longer than chapter 8's tree's.
@@ -52,6 +52,11 @@ impl WideBvh<'_> {
         if self.nodes.is_empty() {
             return;
         }
+        if self.flat {
+            self.offer_leaf(&self.primitives, ray, t_min, closest);
+            return;
+        }
+        let slabs = Slabs::new(&ray.ray);
         let mut stack = ArrayVec::<(Child, f32), STACK>::new();
         stack.push((Child::Node(0), t_min));
         while let Some((child, t_entry)) = stack.pop() {
@@ -61,17 +66,29 @@ impl WideBvh<'_> {
             match child {
                 Child::Node(index) => {
                     let node = &self.nodes[index as usize];
-                    push_nearest_last(node, ray, t_min, closest.limit(), &mut stack);
+                    push_nearest_last(node, &slabs, t_min, closest.limit(), &mut stack);
                 }
                 Child::Leaf { start, count } => {
                     let (start, end) = (start as usize, (start + count) as usize);
-                    for primitive in &self.primitives[start..end] {
-                        if let Some(hit) = primitive.intersect(ray, t_min, closest.limit()) {
-                            closest.offer(hit, primitive.object);
-                        }
-                    }
+                    self.offer_leaf(&self.primitives[start..end], ray, t_min, closest);
                 }
                 Child::Empty => {}
+            }
+        }
+    }
+
+    /// Offers `closest` the hits of a leaf's primitives.
+    #[inline]
+    fn offer_leaf(
+        &self,
+        primitives: &[Primitive],
+        ray: &PreparedRay,
+        t_min: f32,
+        closest: &mut Closest,
+    ) {
+        for primitive in primitives {
+            if let Some(hit) = primitive.intersect(ray, t_min, closest.limit()) {
+                closest.offer(hit, primitive.object);
             }
         }
     }
@@ -82,11 +99,15 @@ impl WideBvh<'_> {
         if self.nodes.is_empty() {
             return false;
         }
+        if self.flat {
+            return blocks(&self.primitives, ray, t_min, t_max);
+        }
+        let slabs = Slabs::new(&ray.ray);
         let mut stack = ArrayVec::<u32, STACK>::new();
         stack.push(0);
         while let Some(index) = stack.pop() {
             let node = &self.nodes[index as usize];
-            let (_, mut mask) = node.enter(ray, t_min, t_max);
+            let (_, mut mask) = node.enter(&slabs, t_min, t_max);
             while mask != 0 {
                 let lane = mask.trailing_zeros() as usize;
                 mask &= mask - 1;
@@ -109,6 +130,14 @@ impl WideBvh<'_> {
     }
 }
 
+/// Does one of `primitives` cast a shadow on the ray in (t_min, t_max)?
+#[inline]
+fn blocks(primitives: &[Primitive], ray: &PreparedRay, t_min: f32, t_max: f32) -> bool {
+    primitives
+        .iter()
+        .any(|p| p.shadows && p.intersect(ray, t_min, t_max).is_some())
+}
+
 /// Pushes the lanes of `node` that the ray enters in [t_min, limit], the
 /// farthest first, so that the nearest is visited next and its hits can
 /// rule out the others.
@@ -118,7 +147,7 @@ impl WideBvh<'_> {
 #[inline]
 fn push_nearest_last(
     node: &Node4,
-    ray: &PreparedRay,
+    ray: &Slabs,
     t_min: f32,
     limit: f32,
     stack: &mut ArrayVec<(Child, f32), STACK>,
