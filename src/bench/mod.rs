@@ -64,6 +64,14 @@ pub struct BenchArgs {
     #[arg(long)]
     pub no_povray: bool,
 
+    /// tinyraytracer's binary, to time against raybook on its scene (a row
+    /// of its own, at its fixed 1024×768). Build it from
+    /// github.com/ssloy/tinyraytracer: `g++ -O3 -fopenmp tinyraytracer.cpp`.
+    /// raybook renders the same scene written as TOML:
+    /// scenes/peers/tinyraytracer.toml.
+    #[arg(long, value_name = "PROGRAM")]
+    pub tinyraytracer: Option<PathBuf>,
+
     /// Report BVH build and render time against primitive count instead.
     #[arg(long)]
     pub scaling: bool,

@@ -1,5 +1,7 @@
-//! The SPD scenes rendered whole-process, by raybook and by POV-Ray: one
-//! table row per scene.
+//! The SPD scenes rendered whole-process, by raybook and by POV-Ray, and
+//! tinyraytracer's scene by raybook and by tinyraytracer: one table row per
+//! scene. The two tracers of a row run in alternation, run after run, so
+//! that a shared machine's drift falls on both alike.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -26,8 +28,8 @@ struct SceneTiming {
     seconds: f64,
     /// Rays raybook traced in one run.
     rays: u64,
-    /// POV-Ray's median wall time, if it rendered the scene.
-    povray_seconds: Option<f64>,
+    /// The peer that rendered the scene too, and its median wall time.
+    peer: Option<(&'static str, f64)>,
 }
 
 /// The table of raybook against POV-Ray, under a line saying how it was
@@ -41,7 +43,11 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
         povray: use_povray(args.no_povray),
     };
     let bar = scene_progress(scenes.len(), args.quiet);
-    let mut timings = Vec::with_capacity(scenes.len());
+    let mut timings = Vec::with_capacity(scenes.len() + 1);
+    if let Some(tinyraytracer) = &args.tinyraytracer {
+        bar.set_message("tinyraytracer");
+        timings.push(time_tinyraytracer(tinyraytracer, &setup)?);
+    }
     for scene in scenes {
         bar.set_message(scene_name(scene));
         timings.push(time_scene(scene, &setup)?);
@@ -85,60 +91,114 @@ fn time_scene(scene: &Path, setup: &Setup) -> Result<SceneTiming, String> {
         .objects
         .len();
     let picture = setup.pictures.join(format!("{name}.png"));
-    let ours = raybook_command(scene, &picture, setup)?;
-    let (seconds, stdout) = time_process(ours, setup.runs)?;
+    let mut ours = raybook_command(scene, &picture, setup)?;
+    ours.args(["--width", &setup.size.to_string()])
+        .args(["--height", &setup.size.to_string()]);
     let pov = scene.with_extension("pov");
-    let povray_seconds = if setup.povray && pov.exists() {
+    let theirs = (setup.povray && pov.exists()).then(|| {
         let picture = setup.pictures.join(format!("{name}-pov.png"));
-        let theirs = povray::command(&pov, &picture, setup.size, setup.threads);
-        Some(time_process(theirs, setup.runs)?.0)
-    } else {
-        None
-    };
+        (
+            "POV-Ray 3.7",
+            povray::command(&pov, &picture, setup.size, setup.threads),
+        )
+    });
+    time_side_by_side(name, primitives, ours, theirs, setup.runs)
+}
+
+/// tinyraytracer's scene, as this repository writes it for raybook
+/// (scenes/peers/tinyraytracer.toml), at tinyraytracer's fixed 1024×768.
+pub const TINYRAYTRACER_SCENE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/scenes/peers/tinyraytracer.toml"
+);
+
+/// Times raybook on tinyraytracer's scene, and the tinyraytracer binary
+/// `program` (which renders its own scene to out.ppm in the folder it runs
+/// in) with as many OpenMP threads.
+fn time_tinyraytracer(program: &Path, setup: &Setup) -> Result<SceneTiming, String> {
+    let scene = Path::new(TINYRAYTRACER_SCENE);
+    let primitives = crate::toolkit::Scene::load(scene)
+        .map_err(|e| e.to_string())?
+        .objects
+        .len();
+    let picture = setup.pictures.join("tinyraytracer.png");
+    let ours = raybook_command(scene, &picture, setup)?;
+    let mut theirs = Command::new(program);
+    theirs
+        .current_dir(&setup.pictures)
+        .env("OMP_NUM_THREADS", setup.threads.to_string())
+        .stdout(Stdio::null());
+    let name = "tinyraytracer".to_string();
+    time_side_by_side(
+        name,
+        primitives,
+        ours,
+        Some(("tinyraytracer", theirs)),
+        setup.runs,
+    )
+}
+
+/// Runs raybook's command and the peer's, if any, in alternation `runs`
+/// times each: their median wall times, and the rays of raybook's report.
+fn time_side_by_side(
+    name: String,
+    primitives: usize,
+    mut ours: Command,
+    mut theirs: Option<(&'static str, Command)>,
+    runs: u32,
+) -> Result<SceneTiming, String> {
+    let (mut our_seconds, mut their_seconds) = (Vec::new(), Vec::new());
+    let mut stdout = String::new();
+    for _ in 0..runs {
+        let (seconds, output) = time_process(&mut ours)?;
+        our_seconds.push(seconds);
+        stdout = output;
+        if let Some((_, command)) = &mut theirs {
+            their_seconds.push(time_process(command)?.0);
+        }
+    }
     Ok(SceneTiming {
         name,
         primitives,
-        seconds,
+        seconds: median(our_seconds),
         rays: rays_of(&stdout),
-        povray_seconds,
+        peer: theirs.map(|(peer, _)| (peer, median(their_seconds))),
     })
 }
 
-/// This binary rendering `scene` to `png`: `raybook render` at the set-up's
-/// size and threads.
+/// This binary rendering `scene` to `png`: `raybook render` with the
+/// set-up's threads.
 fn raybook_command(scene: &Path, png: &Path, setup: &Setup) -> Result<Command, String> {
     let raybook = std::env::current_exe().map_err(|e| format!("cannot find raybook: {e}"))?;
-    let (size, threads) = (setup.size.to_string(), setup.threads.to_string());
+    let threads = setup.threads.to_string();
     let mut command = Command::new(raybook);
     command
         .arg("render")
         .arg(scene)
         .arg("-o")
         .arg(png)
-        .args(["--quiet", "--width", &size, "--height", &size])
+        .arg("--quiet")
         .args(["--threads", &threads]);
     Ok(command)
 }
 
-/// Wall time of `command`, run to completion `runs` times: the median in
-/// seconds, and the standard output of the last run.
-fn time_process(mut command: Command, runs: u32) -> Result<(f64, String), String> {
-    let mut seconds = Vec::new();
-    let mut stdout = String::new();
-    for _ in 0..runs {
-        let start = Instant::now();
-        let output = command
-            .stderr(Stdio::piped())
-            .output()
-            .map_err(|e| format!("cannot run {command:?}: {e}"))?;
-        seconds.push(start.elapsed().as_secs_f64());
-        if !output.status.success() {
-            let err = String::from_utf8_lossy(&output.stderr);
-            return Err(format!("{command:?} failed: {}", err.trim()));
-        }
-        stdout = String::from_utf8_lossy(&output.stdout).into_owned();
+/// Wall time of `command`, run to completion, in seconds, and its
+/// standard output.
+fn time_process(command: &mut Command) -> Result<(f64, String), String> {
+    let start = Instant::now();
+    let output = command
+        .stderr(Stdio::piped())
+        .output()
+        .map_err(|e| format!("cannot run {command:?}: {e}"))?;
+    let seconds = start.elapsed().as_secs_f64();
+    if !output.status.success() {
+        let err = String::from_utf8_lossy(&output.stderr);
+        return Err(format!("{command:?} failed: {}", err.trim()));
     }
-    Ok((median(seconds), stdout))
+    Ok((
+        seconds,
+        String::from_utf8_lossy(&output.stdout).into_owned(),
+    ))
 }
 
 /// The ray count in `raybook render`'s report ("N rays: ..."), or 0.
@@ -160,24 +220,26 @@ fn timings_table(timings: &[SceneTiming]) -> String {
         "raybook",
         "rays",
         "rays/s",
-        "POV-Ray 3.7",
-        "POV-Ray / raybook",
+        "peer",
+        "peer's time",
+        "peer / raybook",
     ];
     table::markdown(header, timings.iter().map(SceneTiming::cells), 1)
 }
 
 impl SceneTiming {
-    /// The table's cells for this scene; a dash where POV-Ray did not run.
-    fn cells(&self) -> [String; 7] {
-        let povray = |show: &dyn Fn(f64) -> String| self.povray_seconds.map_or("–".into(), show);
+    /// The table's cells for this scene; dashes where no peer ran.
+    fn cells(&self) -> [String; 8] {
+        let peer = |show: &dyn Fn(f64) -> String| self.peer.map_or("–".into(), |(_, t)| show(t));
         [
             self.name.clone(),
             self.primitives.to_string(),
             format!("{:.2} s", self.seconds),
             format!("{:.1} M", self.rays as f64 / 1e6),
             format!("{:.1} M", self.rays as f64 / self.seconds / 1e6),
-            povray(&|theirs| format!("{theirs:.2} s")),
-            povray(&|theirs| format!("{:.2}", theirs / self.seconds)),
+            self.peer.map_or("–", |(name, _)| name).to_string(),
+            peer(&|theirs| format!("{theirs:.2} s")),
+            peer(&|theirs| format!("{:.2}", theirs / self.seconds)),
         ]
     }
 }

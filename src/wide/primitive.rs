@@ -49,7 +49,7 @@ impl Primitive {
     /// Where the ray meets it in (t_min, t_max): chapter 2's `intersect`, to
     /// the last bit, with the triangle test's per-ray work done once; with
     /// a triangle's barycentric weights, which chapter 2 works out again.
-    #[inline]
+    #[inline(always)]
     pub fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<(f32, Weights)> {
         match self.geometry {
             Geometry::Sphere { center, radius } => {
