@@ -87,7 +87,7 @@ fn a_tiny_scene_gets_a_row_with_its_rays_hits_and_throughput() {
         String::from_utf8_lossy(&out.stderr)
     );
     let cells = row(&stdout, "tetra-3");
-    assert_eq!(cells.len(), 11, "{cells:?}");
+    assert_eq!(cells.len(), 12, "{cells:?}");
     assert_eq!(cells[1], "64", "primitives");
     assert_eq!(cells[2], "256", "16×16 rays");
     let shown = rendered_hits(&spd("tetra-3.nff", 16, 16));
@@ -97,11 +97,11 @@ fn a_tiny_scene_gets_a_row_with_its_rays_hits_and_throughput() {
         shown.to_string(),
         "hits: the pixels that show the scene"
     );
-    for (column, cell) in [(4, &cells[4]), (5, &cells[5])] {
+    for (column, cell) in [(4, &cells[4]), (5, &cells[5]), (6, &cells[6])] {
         let mrays: f64 = cell.parse().unwrap();
         assert!(mrays > 0.0, "column {column}: {cell} Mrays/s");
     }
-    assert_eq!(cells[6], "not run (--no-embree)");
+    assert_eq!(cells[7], "not run (--no-embree)");
     assert_eq!(
         stdout.lines().filter(|l| l.starts_with("| ")).count(),
         2,
@@ -118,7 +118,7 @@ fn without_embree_the_table_says_how_to_install_it() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{stdout}");
     assert_eq!(
-        row(&stdout, "tetra-3")[6],
+        row(&stdout, "tetra-3")[7],
         "not installed: pip install embreex numpy"
     );
 }
@@ -136,17 +136,17 @@ fn where_embree_runs_it_agrees_with_raybook_and_spheres_are_left_out() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{stdout}");
     let tetra = row(&stdout, "tetra-3");
-    if tetra[6].starts_with("not installed") {
-        assert_eq!(row(&stdout, "balls-1")[6], tetra[6]);
+    if tetra[7].starts_with("not installed") {
+        assert_eq!(row(&stdout, "balls-1")[7], tetra[7]);
         return;
     }
     // "99.999 % (3 differ)"
     let percent = |cell: &str| -> f64 { cell.split(" %").next().unwrap().parse().unwrap() };
-    assert!(tetra[6].parse::<f64>().unwrap() > 0.0, "{tetra:?}");
-    assert!(percent(&tetra[9]) >= 99.9, "hit/miss: {tetra:?}");
-    assert!(percent(&tetra[10]) >= 99.9, "distances: {tetra:?}");
+    assert!(tetra[7].parse::<f64>().unwrap() > 0.0, "{tetra:?}");
+    assert!(percent(&tetra[10]) >= 99.9, "hit/miss: {tetra:?}");
+    assert!(percent(&tetra[11]) >= 99.9, "distances: {tetra:?}");
     assert_eq!(
-        row(&stdout, "balls-1")[6],
+        row(&stdout, "balls-1")[7],
         "n/a (embreex has triangles only)"
     );
 }

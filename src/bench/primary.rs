@@ -94,6 +94,8 @@ struct PrimaryTiming {
     hits: usize,
     /// raybook's median time on one thread.
     serial_seconds: f64,
+    /// The same with chapter 8's binary BVH, the lesson's.
+    chapter8_seconds: f64,
     /// raybook's median time on all the threads.
     parallel_seconds: f64,
     embree: EmbreeResult,
@@ -390,13 +392,18 @@ fn time_scene(
 ) -> Result<PrimaryTiming, String> {
     let rays = primary_rays(scene);
     let world = primary_world(scene);
-    let (mut serial, mut parallel) = (Vec::new(), Vec::new());
+    let binary = ch08_bvh::Bvh::build(&scene.objects);
+    let (mut serial, mut parallel, mut chapter8) = (Vec::new(), Vec::new(), Vec::new());
     let mut t = vec![0.0f32; rays.len()];
     let mut t_parallel = vec![0.0f32; rays.len()];
+    let mut t_chapter8 = vec![0.0f32; rays.len()];
     for _ in 0..runs {
         let start = Instant::now();
         trace_serial(&world, &rays, &mut t);
         serial.push(start.elapsed().as_secs_f64());
+        let start = Instant::now();
+        trace_serial(&binary, &rays, &mut t_chapter8);
+        chapter8.push(start.elapsed().as_secs_f64());
         let start = Instant::now();
         pool.install(|| trace_parallel(&world, &rays, &mut t_parallel));
         parallel.push(start.elapsed().as_secs_f64());
@@ -405,6 +412,9 @@ fn time_scene(
         return Err(format!(
             "{name}: the threads found other hits than one thread"
         ));
+    }
+    if t != t_chapter8 {
+        return Err(format!("{name}: chapter 8's BVH found other hits"));
     }
     let embree = match embree {
         Err(why) => EmbreeResult::Skipped(why.clone()),
@@ -423,6 +433,7 @@ fn time_scene(
         rays: rays.len(),
         hits: t.iter().filter(|t| t.is_finite()).count(),
         serial_seconds: median(serial),
+        chapter8_seconds: median(chapter8),
         parallel_seconds: median(parallel),
         embree,
     })
@@ -436,6 +447,7 @@ fn timings_table(timings: &[PrimaryTiming], threads: u32) -> String {
         "primitives",
         "rays",
         "hits",
+        "chapter 8's BVH Mrays/s, 1 thread",
         "raybook Mrays/s, 1 thread",
         &per_thread,
         "Embree Mrays/s, 1 thread",
@@ -450,7 +462,7 @@ fn timings_table(timings: &[PrimaryTiming], threads: u32) -> String {
 impl PrimaryTiming {
     /// The table's cells for this scene; where Embree did not run, its
     /// first cell says why and the others are dashes.
-    fn cells(&self, threads: u32) -> [String; 11] {
+    fn cells(&self, threads: u32) -> [String; 12] {
         let mrays = |seconds: f64| self.rays as f64 / seconds / 1e6;
         let per_thread = mrays(self.parallel_seconds) / f64::from(threads);
         let dash = || "–".to_owned();
@@ -471,6 +483,7 @@ impl PrimaryTiming {
             self.primitives.to_string(),
             self.rays.to_string(),
             self.hits.to_string(),
+            format!("{:.2}", mrays(self.chapter8_seconds)),
             format!("{:.2}", mrays(self.serial_seconds)),
             format!("{per_thread:.2}"),
             embree,
