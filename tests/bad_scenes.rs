@@ -391,3 +391,39 @@ fn a_point_light_says_its_falloff_in_words() {
     };
     assert_eq!(falloff, raybook::toolkit::scene::Falloff::None);
 }
+
+/// The good scene's sphere replaced by a cone with `fields`.
+fn cone(fields: &str) -> String {
+    let sphere = "type = \"sphere\"\ncenter = [0.0, 1.0, 0.0]\nradius = 1.0";
+    GOOD.replacen(sphere, &format!("type = \"cone\"\n{fields}"), 1)
+}
+
+const CONE: &str =
+    "base = [0.0, 0.0, 0.0]\nbase_radius = 1.0\napex = [0.0, 2.0, 0.0]\napex_radius = 0.5";
+
+#[test]
+fn a_cone_is_read_and_its_ends_are_checked() {
+    let scene = Scene::parse(&cone(CONE), "good.toml").unwrap();
+    let raybook::toolkit::scene::Shape::Cone {
+        apex, apex_radius, ..
+    } = scene.objects[0].shape
+    else {
+        panic!("a cone: {:?}", scene.objects[0]);
+    };
+    assert_eq!((apex.y, apex_radius), (2.0, 0.5));
+    let refused = |fields: &str| {
+        let e = Scene::parse(&cone(fields), "bad.toml").expect_err("must be refused");
+        println!("{e}\n");
+        e
+    };
+    let e = refused(&CONE.replace("[0.0, 2.0, 0.0]", "[0.0, 0.0, 0.0]"));
+    assert_error(&e, 20, "objects[0]", &["coincide"]);
+    let e = refused(&CONE.replace("apex_radius = 0.5", "apex_radius = -0.5"));
+    assert_error(&e, 25, "objects[0].apex_radius", &["-0.5"]);
+    let e = refused(&CONE.replace("1.0\n", "0.0\n").replace("0.5", "0.0"));
+    assert_error(&e, 20, "objects[0]", &["radius > 0"]);
+    let e = refused(&CONE.replace("apex_radius = 0.5", ""));
+    assert_error(&e, 20, "objects[0]", &["missing field `apex_radius`"]);
+    let e = refused(&format!("{CONE}\nradius = 1.0"));
+    assert_error(&e, 20, "objects[0].radius", &["a cone has no `radius`"]);
+}

@@ -88,6 +88,35 @@ fn direction() -> impl Strategy<Value = Vec3> {
     ]
 }
 
+/// A cone or cylinder (some along a coordinate axis, which rays along axes run parallel to), pointed at either end or not.
+fn cone() -> impl Strategy<Value = Shape> {
+    (
+        point(),
+        point(),
+        0.0f32..1.0,
+        0.0f32..1.0,
+        any::<bool>(),
+        0..6usize,
+    )
+        .prop_filter_map(
+            "no axis or no radius",
+            |(base, apex, base_radius, apex_radius, inside_out, along)| {
+                let apex = match along {
+                    0..3 => base + apex.length() * Vec3::AXES[along],
+                    _ => apex,
+                };
+                let usable = base.distance(apex) > 0.1 && base_radius.max(apex_radius) > 0.05;
+                usable.then_some(Shape::Cone {
+                    base,
+                    base_radius,
+                    apex,
+                    apex_radius,
+                    inside_out,
+                })
+            },
+        )
+}
+
 fn object() -> impl Strategy<Value = Object> {
     let shape = prop_oneof![
         4 => (point(), 0.05f32..1.5).prop_map(|(center, radius)| Shape::Sphere { center, radius }),
@@ -102,6 +131,7 @@ fn object() -> impl Strategy<Value = Object> {
             let area = (b - a).cross(c - a).length();
             (area > 1e-3).then_some(Shape::Triangle { vertices: [a, b, c] })
         }),
+        3 => cone(),
         1 => (point(), -3.0f32..3.0).prop_filter_map("no normal", |(n, offset)| {
             (n.length() > 0.1).then(|| Shape::Plane { normal: n.normalize(), offset })
         }),

@@ -182,7 +182,9 @@ impl Embree {
     ) -> Result<(f64, Vec<f32>), String> {
         let corners = scene.objects.iter().flat_map(|o| match o.shape {
             Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => vertices,
-            Shape::Sphere { .. } | Shape::Plane { .. } => unreachable!("triangles only"),
+            Shape::Sphere { .. } | Shape::Plane { .. } | Shape::Cone { .. } => {
+                unreachable!("triangles only")
+            }
         });
         write_f32(
             &folder.join("triangles.f32"),

@@ -7,15 +7,27 @@ use glam::{Mat3A, Vec3A};
 
 use crate::toolkit::Vec3;
 use crate::toolkit::scene::Shape;
-use crate::tracer::{Ray, intersect_sphere};
+use crate::tracer::{Ray, intersect_cone, intersect_sphere};
 
-/// An object's geometry as intersection needs it: a sphere, or a triangle's
+/// An object's geometry as intersection needs it: a sphere, a triangle's
 /// corners (a smooth triangle's normals matter only once the hit is chosen,
-/// and are read from the scene then).
+/// and are read from the scene then), or a cone's ends (whether it is inside
+/// out matters only for the normal).
 #[derive(Debug, Clone, Copy)]
 pub enum Geometry {
-    Sphere { center: Vec3, radius: f32 },
-    Triangle { vertices: [Vec3; 3] },
+    Sphere {
+        center: Vec3,
+        radius: f32,
+    },
+    Triangle {
+        vertices: [Vec3; 3],
+    },
+    Cone {
+        base: Vec3,
+        base_radius: f32,
+        apex: Vec3,
+        apex_radius: f32,
+    },
 }
 
 /// A bounded object, stored in the order of the tree's leaves: 48 bytes.
@@ -36,6 +48,18 @@ impl Primitive {
             Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
                 Geometry::Triangle { vertices }
             }
+            Shape::Cone {
+                base,
+                base_radius,
+                apex,
+                apex_radius,
+                ..
+            } => Geometry::Cone {
+                base,
+                base_radius,
+                apex,
+                apex_radius,
+            },
             Shape::Plane { .. } => return None,
         };
         let object = u32::try_from(object).expect("fewer than 2³² objects");
@@ -57,6 +81,16 @@ impl Primitive {
                 Some((t, Weights::NONE))
             }
             Geometry::Triangle { vertices } => ray.shear().intersect(vertices, t_min, t_max),
+            Geometry::Cone {
+                base,
+                base_radius,
+                apex,
+                apex_radius,
+            } => {
+                let t =
+                    intersect_cone(base, base_radius, apex, apex_radius, &ray.ray, t_min, t_max)?;
+                Some((t, Weights::NONE))
+            }
         }
     }
 }

@@ -10,7 +10,7 @@ pub mod scene;
 pub mod snapshot;
 pub mod stats;
 
-pub use glam::Vec3;
+pub use glam::{DVec3, Vec3};
 pub use image::Image;
 pub use scene::{Scene, SceneError};
 pub use stats::Stats;

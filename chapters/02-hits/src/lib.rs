@@ -1,5 +1,6 @@
 #![doc = include_str!("../README.md")]
 
+mod cone;
 mod plane;
 mod sphere;
 mod triangle;
@@ -7,6 +8,7 @@ mod triangle;
 pub mod ray_tree;
 
 pub use ch01_rays::{Camera, Ray, render, toolkit};
+pub use cone::{cone_point, intersect_cone};
 pub use plane::{intersect_plane, plane_point};
 pub use sphere::{intersect_sphere, sphere_point, sphere_roots, sphere_roots_abc};
 pub use triangle::{
@@ -26,7 +28,9 @@ pub struct Hit {
     pub point: Vec3,
     /// The surface's geometric unit normal at the point, as the shape defines
     /// it: outward for a sphere, n for a plane, along (p₁ − p₀) × (p₂ − p₀)
-    /// for a triangle (p₀, p₁, p₂). It may face away from the ray; shading decides what to do.
+    /// for a triangle (p₀, p₁, p₂), away from the axis for a cone (towards
+    /// it if the cone is inside out). It may face away from the ray; shading
+    /// decides what to do.
     /// Rays leaving the surface are offset along it.
     pub normal: Vec3,
     /// The unit normal that shading uses: the geometric `normal` for every
@@ -49,6 +53,13 @@ pub fn intersect(shape: &Shape, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32
         Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             intersect_triangle(vertices, ray, t_min, t_max).map(|(t, _, _)| t)
         }
+        Shape::Cone {
+            base,
+            base_radius,
+            apex,
+            apex_radius,
+            ..
+        } => intersect_cone(base, base_radius, apex, apex_radius, ray, t_min, t_max),
     }
 }
 
@@ -58,7 +69,7 @@ pub fn hit_at(shape: &Shape, ray: &Ray, t: f32, object: usize) -> Hit {
         Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             barycentrics(vertices, ray)
         }
-        Shape::Sphere { .. } | Shape::Plane { .. } => (0.0, 0.0),
+        Shape::Sphere { .. } | Shape::Plane { .. } | Shape::Cone { .. } => (0.0, 0.0),
     };
     hit_with_weights(shape, ray, t, weights, object)
 }
@@ -76,7 +87,8 @@ pub fn hit_with_weights(
     // or plane; a triangle's is the barycentric mean of its corners), which
     // bounds its error by a few units in the last place (f32::EPSILON
     // relative) of the largest coordinate involved: the point's, and for a
-    // triangle its corners'.
+    // triangle its corners'. A cone's point is worked out in f64 and is
+    // off by its rounding to f32 only, as a sphere's is.
     let (point, normal, shading_normal, error) = match *shape {
         Shape::Sphere { center, radius } => {
             let point = sphere_point(center, radius, ray, t);
@@ -99,6 +111,18 @@ pub fn hit_with_weights(
                 .iter()
                 .fold(largest(point), |m, &v| m.max(largest(v)));
             (point, normal, shading_normal, 8.0 * f32::EPSILON * scale)
+        }
+        Shape::Cone {
+            base,
+            base_radius,
+            apex,
+            apex_radius,
+            inside_out,
+        } => {
+            let (point, outward) = cone_point(base, base_radius, apex, apex_radius, ray, t);
+            let normal = if inside_out { -outward } else { outward };
+            let error = 4.0 * f32::EPSILON * (largest(point) + base_radius.max(apex_radius));
+            (point, normal, normal, error)
         }
     };
     Hit {

@@ -124,6 +124,24 @@ fn signed_distance(shape: &Shape, p: Vec3) -> f64 {
             let n = (b - a).cross(c - a).normalize();
             n.dot(p - a)
         }
+        Shape::Cone {
+            base,
+            base_radius,
+            apex,
+            apex_radius,
+            inside_out,
+        } => {
+            // In the plane through the axis and p: p is s along the axis and
+            // ρ across it; the side is the line ρ = r(s) = r_b + k·s, which
+            // p lies (ρ − r(s))·cos α from, where tan α = k.
+            let (base, axis) = (DVec3::of(base), DVec3::of(apex - base));
+            let (h, k) = (axis.length(), f64::from(apex_radius - base_radius));
+            let (w, k) = (axis / h, k / h);
+            let s = (p - base).dot(w);
+            let rho = ((p - base) - s * w).length();
+            let outside = (rho - f64::from(base_radius) - k * s) / (1.0 + k * k).sqrt();
+            if inside_out { -outside } else { outside }
+        }
     }
 }
 
@@ -134,7 +152,7 @@ fn cases(random: &mut Random, count: usize) -> Vec<(Shape, Ray)> {
         let scale = [1.0, 100.0, 1e4][i % 3];
         let center = scale * DVec3::new(random.signed(), random.signed(), random.signed());
         let eye = center + scale * 0.5 * random.unit();
-        let shape = match (i / 3) % 3 {
+        let shape = match (i / 3) % 4 {
             0 => {
                 let normal = random.unit();
                 let offset = -normal.dot(center);
@@ -147,6 +165,20 @@ fn cases(random: &mut Random, count: usize) -> Vec<(Shape, Ray)> {
                 center: f32s(center),
                 radius: (0.01 * scale * (1.0 + 9.0 * random.next())) as f32,
             },
+            2 => {
+                // Long and thin as the SPD rings' cylinders, or pointed.
+                let size = 0.1 * scale;
+                let base = center + size * random.unit();
+                let apex = base + 3.0 * size * random.unit();
+                let radius = (0.1 * size * (1.0 + random.next())) as f32;
+                Shape::Cone {
+                    base: f32s(base),
+                    base_radius: radius,
+                    apex: f32s(apex),
+                    apex_radius: [radius, 0.0, 0.5 * radius][i % 3],
+                    inside_out: i % 2 == 0,
+                }
+            }
             _ => {
                 // Some of them slivers: one corner almost on the opposite edge.
                 let size = 0.1 * scale;
@@ -173,6 +205,16 @@ fn cases(random: &mut Random, count: usize) -> Vec<(Shape, Ray)> {
                 DVec3::of(a) + u * DVec3::of(b - a) + v * DVec3::of(c - a)
             }
             Shape::Sphere { radius, .. } => center + 0.9 * f64::from(radius) * random.unit(),
+            Shape::Cone {
+                base,
+                base_radius,
+                apex,
+                ..
+            } => {
+                let (base, axis) = (DVec3::of(base), DVec3::of(apex - base));
+                let across = axis.cross(random.unit()).normalize();
+                base + random.next() * axis + 0.5 * f64::from(base_radius) * across
+            }
             _ => center + 0.3 * scale * random.unit(),
         };
         let eye32 = f32s(eye);
@@ -181,8 +223,8 @@ fn cases(random: &mut Random, count: usize) -> Vec<(Shape, Ray)> {
     out
 }
 
-/// Many hits on planes, spheres and triangles (slivers among them), near the
-/// origin and up to 10⁴ from it.
+/// Many hits on planes, spheres, cones and triangles (slivers among them),
+/// near the origin and up to 10⁴ from it.
 fn hits() -> Vec<(Shape, Hit)> {
     let mut random = Random(0x9e37_79b9_7f4a_7c15);
     cases(&mut random, 6000)

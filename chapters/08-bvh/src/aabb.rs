@@ -95,6 +95,38 @@ pub fn bounds(shape: &Shape) -> Option<Aabb> {
         Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             vertices.iter().fold(Aabb::EMPTY, |b, &v| b.grow(v))
         }
+        Shape::Cone {
+            base,
+            base_radius,
+            apex,
+            apex_radius,
+            ..
+        } => {
+            let axis = apex - base;
+            disk(base, axis, base_radius).union(disk(apex, axis, apex_radius))
+        }
     };
     Some(exact.padded())
+}
+
+/// The box around a disk of centre c, radius r and axis along `axis`
+/// (an end of a cone; the cone's side lies between its end disks, so the
+/// box of both bounds it).
+///
+/// With w the unit axis, the disk's points are c + r·u for unit vectors u
+/// perpendicular to w. Along coordinate i they reach farthest where u leans
+/// most along e_i: u is e_i's part across w, e_i − w_i·w, normalised, whose
+/// i-th coordinate is 1 − w_i² over its length √(1 − w_i²). So the extent
+/// is r·√(1 − w_i²): 0 along the axis of a disk facing e_i, r across it.
+/// 1 − w_i² is computed as (w_j² + w_k²), the other two coordinates, which
+/// does not cancel for an axis close to e_i as 1 − w_i² does in f32.
+fn disk(center: Vec3, axis: Vec3, radius: f32) -> Aabb {
+    let w = axis / axis.length();
+    let sq = w * w;
+    let across = Vec3::new(sq.y + sq.z, sq.z + sq.x, sq.x + sq.y);
+    let extent = radius * across.sqrt();
+    Aabb {
+        min: center - extent,
+        max: center + extent,
+    }
 }

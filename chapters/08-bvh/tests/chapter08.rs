@@ -78,6 +78,24 @@ fn point() -> impl Strategy<Value = Vec3> {
     prop::array::uniform3(-4.0f32..4.0).prop_map(Vec3::from)
 }
 
+/// A cone or cylinder, pointed at either end or not.
+fn cone() -> impl Strategy<Value = Shape> {
+    let radius = || prop_oneof![Just(0.0f32), 0.05f32..1.0];
+    (point(), point(), radius(), radius(), any::<bool>()).prop_filter_map(
+        "no axis or no radius",
+        |(base, apex, base_radius, apex_radius, inside_out)| {
+            let usable = base.distance(apex) > 0.1 && base_radius.max(apex_radius) > 0.05;
+            usable.then_some(Shape::Cone {
+                base,
+                base_radius,
+                apex,
+                apex_radius,
+                inside_out,
+            })
+        },
+    )
+}
+
 fn object() -> impl Strategy<Value = Object> {
     let shape = prop_oneof![
         4 => (point(), 0.05f32..1.5).prop_map(|(center, radius)| Shape::Sphere { center, radius }),
@@ -85,6 +103,7 @@ fn object() -> impl Strategy<Value = Object> {
             let area = (b - a).cross(c - a).length();
             (area > 1e-3).then_some(Shape::Triangle { vertices: [a, b, c] })
         }),
+        3 => cone(),
         1 => (point(), -3.0f32..3.0).prop_filter_map("no normal", |(n, offset)| {
             (n.length() > 0.1).then(|| Shape::Plane { normal: n.normalize(), offset })
         }),
@@ -101,6 +120,32 @@ proptest! {
 
     /// Random objects, random rays: the BVH answers both questions exactly
     /// as chapter 2's and chapter 4's loops do.
+    /// A cone's box holds every point of its side, and it is tight: each
+    /// face is touched by a point of an end circle (up to the few
+    /// millionths of `padded` and the gaps between the sampled angles).
+    #[test]
+    fn a_cones_box_holds_its_side_and_touches_it(cone in cone()) {
+        let Shape::Cone { base, base_radius, apex, apex_radius, .. } = cone else {
+            unreachable!()
+        };
+        let b = ch08_bvh::bounds(&cone).unwrap();
+        let w = (apex - base).normalize();
+        let (u, v) = w.any_orthonormal_pair();
+        let (mut low, mut high) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+        for i in 0..256 {
+            let angle = i as f32 * std::f32::consts::TAU / 256.0;
+            let across = u * angle.cos() + v * angle.sin();
+            for s in [0.0, 0.3, 1.0] {
+                let p = base.lerp(apex, s) + (base_radius + s * (apex_radius - base_radius)) * across;
+                prop_assert!(p.cmpge(b.min).all() && p.cmple(b.max).all(), "{p} outside {b:?}");
+                (low, high) = (low.min(p), high.max(p));
+            }
+        }
+        let slack = 1e-3 * base_radius.max(apex_radius) + 1e-4;
+        prop_assert!((b.min - low).abs().max_element() < slack, "{b:?} vs {low}");
+        prop_assert!((b.max - high).abs().max_element() < slack, "{b:?} vs {high}");
+    }
+
     #[test]
     fn bvh_agrees_with_brute_force_on_random_rays(
         objects in prop::collection::vec(object(), 1..60),

@@ -20,7 +20,7 @@
 //! Each row is a list of runs `OBJECT*COUNT`, `-` meaning no object.
 
 /// What kind of shape an object is: the ray tree's names (`sphere`, `plane`,
-/// `triangle`, `smooth_triangle`), so that verify and `--pixel` agree.
+/// `triangle`, `smooth_triangle`, `cone`), so that verify and `--pixel` agree.
 pub use crate::toolkit::ray_tree::shape_name;
 
 /// One object of a scene, as a student recognises it.

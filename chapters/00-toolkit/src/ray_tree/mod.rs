@@ -148,7 +148,7 @@ pub enum Side {
 pub struct ObjectRef {
     /// Its index, from 0 in the order of the scene's `[[objects]]`.
     pub object: usize,
-    /// `sphere`, `plane`, `triangle` or `smooth_triangle`.
+    /// `sphere`, `plane`, `triangle`, `smooth_triangle` or `cone`.
     pub shape: String,
 }
 
@@ -258,13 +258,14 @@ pub struct RefractionNode {
     pub refracted_weight: Option<[f32; 3]>,
 }
 
-/// The name of a shape in the tree: `sphere`, `plane`, `triangle`, `smooth_triangle`.
+/// The name of a shape in the tree: `sphere`, `plane`, `triangle`, `smooth_triangle`, `cone`.
 pub fn shape_name(shape: &Shape) -> &'static str {
     match shape {
         Shape::Sphere { .. } => "sphere",
         Shape::Plane { .. } => "plane",
         Shape::Triangle { .. } => "triangle",
         Shape::SmoothTriangle { .. } => "smooth_triangle",
+        Shape::Cone { .. } => "cone",
     }
 }
 

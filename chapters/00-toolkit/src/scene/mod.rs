@@ -192,6 +192,19 @@ pub enum Shape {
         vertices: [Vec3; 3],
         normals: [Vec3; 3],
     },
+    /// The side of a truncated cone around the axis from `base` to `apex`
+    /// (distinct points), without end caps: its radius goes linearly from
+    /// `base_radius` to `apex_radius` (both ≥ 0, one > 0); a cylinder when
+    /// they are equal, a pointed cone when one is 0. The SPD scenes' NFF `c`.
+    /// Its normal points away from the axis, or towards it if `inside_out`
+    /// (NFF's negative radii: only the inside is meant to be seen).
+    Cone {
+        base: Vec3,
+        base_radius: f32,
+        apex: Vec3,
+        apex_radius: f32,
+        inside_out: bool,
+    },
 }
 
 impl Scene {
@@ -230,6 +243,10 @@ impl Scene {
                 Shape::Plane { normal, offset: d } => *d -= normal.dot(offset),
                 Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
                     vertices.iter_mut().for_each(|v| *v += offset)
+                }
+                Shape::Cone { base, apex, .. } => {
+                    *base += offset;
+                    *apex += offset;
                 }
             }
         }

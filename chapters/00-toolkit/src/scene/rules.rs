@@ -64,6 +64,44 @@ pub(crate) fn direction(v: Vec3) -> Result<(Vec3, f32), String> {
     Ok((v / length, length))
 }
 
+/// Why a cone whose base and apex coincide is refused.
+pub(crate) const CONE_AXIS: &str =
+    "the base and the apex coincide: a cone needs an axis of non-zero length";
+
+/// Why a cone with two zero radii is refused.
+pub(crate) const CONE_RADII: &str = "a cone needs a radius > 0 at one end at least";
+
+/// A cone's ends: distinct, radii ≥ 0 and not both 0, and an axis that f32
+/// can measure. The intersection divides by the height h = |apex − base|
+/// and the normal tilts by (r_base − r_apex)/h, so both must be finite and
+/// h > 0 in f32 (an axis of length 1e-44 passes `base != apex` but not this).
+pub(crate) fn cone(
+    base: Vec3,
+    base_radius: f32,
+    apex: Vec3,
+    apex_radius: f32,
+) -> Result<(), String> {
+    if base == apex {
+        return Err(CONE_AXIS.into());
+    }
+    if !(base_radius >= 0.0 && apex_radius >= 0.0) {
+        return Err(format!(
+            "a cone's radii are ≥ 0; found {base_radius} and {apex_radius}"
+        ));
+    }
+    if base_radius == 0.0 && apex_radius == 0.0 {
+        return Err(CONE_RADII.into());
+    }
+    let height = (apex - base).length();
+    let tilt = (base_radius - apex_radius) / height;
+    if !(height > 0.0 && height.is_finite() && tilt.is_finite()) {
+        return Err(
+            "the cone is too short for its radii, or too far out, to measure in f32".into(),
+        );
+    }
+    Ok(())
+}
+
 /// Why [`has_area`] refuses a triangle.
 pub(crate) const ZERO_AREA: &str =
     "the triangle has zero area (two vertices coincide or all three lie on a line)";

@@ -160,6 +160,7 @@ pub(super) enum ObjectKind {
     Plane,
     Triangle,
     Mesh,
+    Cone,
 }
 
 /// Every field any object may have; each kind picks its own.
@@ -175,13 +176,18 @@ pub(super) struct ObjectFile {
     pub vertices: Option<Corners>,
     /// A mesh's OBJ file, relative to the scene file.
     pub path: Option<Spanned<String>>,
+    /// A cone's ends: the centres of its end circles and their radii.
+    pub base: Option<Xyz>,
+    pub base_radius: Option<NonNegative>,
+    pub apex: Option<Xyz>,
+    pub apex_radius: Option<NonNegative>,
     pub material: Spanned<String>,
     pub shadows: Option<bool>,
 }
 
 impl ObjectFile {
     /// The optional fields of the shape in file order, and whether each is set.
-    pub fn fields_set(&self) -> [(&'static str, bool); 6] {
+    pub fn fields_set(&self) -> [(&'static str, bool); 10] {
         [
             ("center", self.center.is_some()),
             ("radius", self.radius.is_some()),
@@ -189,6 +195,10 @@ impl ObjectFile {
             ("offset", self.offset.is_some()),
             ("vertices", self.vertices.is_some()),
             ("path", self.path.is_some()),
+            ("base", self.base.is_some()),
+            ("base_radius", self.base_radius.is_some()),
+            ("apex", self.apex.is_some()),
+            ("apex_radius", self.apex_radius.is_some()),
         ]
     }
 }

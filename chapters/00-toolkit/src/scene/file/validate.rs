@@ -149,6 +149,7 @@ fn object_from_record(
         ObjectKind::Plane => vec![plane(o, &r)?],
         ObjectKind::Triangle => vec![triangle(o, &r)?],
         ObjectKind::Mesh => mesh(o, &r)?,
+        ObjectKind::Cone => vec![cone(o, &r)?],
     };
     let material = material_id(&o.material, materials, &r)?;
     let shadows = o.shadows.unwrap_or(true);
@@ -186,6 +187,32 @@ fn triangle(o: &ObjectFile, r: &Record) -> Result<Shape, SceneError> {
     r.refuse(&o.fields_set(), "triangle", &takes)?;
     Ok(Shape::Triangle {
         vertices: r.need(o.vertices.map(|v| v.0), "vertices", "triangle")?,
+    })
+}
+
+/// A cone or cylinder without end caps, by the rules NFF's `c` obeys too.
+fn cone(o: &ObjectFile, r: &Record) -> Result<Shape, SceneError> {
+    let takes = [
+        "base",
+        "base_radius",
+        "apex",
+        "apex_radius",
+        "material",
+        "shadows",
+    ];
+    r.refuse(&o.fields_set(), "cone", &takes)?;
+    let base = r.need(o.base.map(|p| p.0), "base", "cone")?;
+    let base_radius = r.need(o.base_radius.map(|x| x.0), "base_radius", "cone")?;
+    let apex = r.need(o.apex.map(|p| p.0), "apex", "cone")?;
+    let apex_radius = r.need(o.apex_radius.map(|x| x.0), "apex_radius", "cone")?;
+    rules::cone(base, base_radius, apex, apex_radius)
+        .map_err(|message| r.check.error(r.span.clone(), r.path.clone(), message))?;
+    Ok(Shape::Cone {
+        base,
+        base_radius,
+        apex,
+        apex_radius,
+        inside_out: false,
     })
 }
 

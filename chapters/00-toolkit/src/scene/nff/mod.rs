@@ -13,7 +13,7 @@
 //! | `s x y z r` | sphere |
 //! | `p n` + n corners | planar polygon, convex or not, cut into n − 2 compact triangles by ear clipping (`polygon.rs`) |
 //! | `pp n` + n corners with normals | the same, smooth: triangles with vertex normals |
-//! | `c` + base `x y z r` + apex `x y z r` (on the `c` line or two lines of their own) | cone or cylinder without caps: [`CONE_SEGMENTS`] segments of smooth triangles with the cone's exact normals (`cone.rs`); negative radii: only the inside is seen |
+//! | `c` + base `x y z r` + apex `x y z r` (on the `c` line or two lines of their own) | cone or cylinder without caps, one [`Shape::Cone`]; negative radii (both): only the inside is seen, so its normals point in (`inside_out`) |
 //!
 //! NFF lights do not fall off with distance, so they become raybook point
 //! lights with [`Falloff::None`]. NFF leaves the brightness of a light
@@ -41,12 +41,9 @@ use super::{
 use crate::Color;
 use reader::{Line, Reader};
 
-mod cone;
 mod polygon;
 mod reader;
 mod viewpoint;
-
-pub use cone::SEGMENTS as CONE_SEGMENTS;
 
 /// Is `path` an NFF file, by its name (`.nff`, in any case)?
 pub fn is_nff(path: &Path) -> bool {
@@ -194,24 +191,10 @@ impl Nff {
         self.add_all(line, reader, shapes)
     }
 
-    /// A `c` cone or cylinder, as smooth triangles (`cone.rs`).
+    /// A `c` cone or cylinder: one [`Shape::Cone`].
     fn cone<'a>(&mut self, line: &Line<'a>, reader: &mut Reader<'a>) -> Result<(), SceneError> {
-        let (base, apex, inside) = cone_ends(line, reader)?;
-        // A cone too thin, too short or too far out for f32 may have
-        // triangles without area, or normals that overflow.
-        let usable = |shape: &Shape| match *shape {
-            Shape::SmoothTriangle { vertices, normals } => {
-                has_area(vertices) && normals.iter().all(|n| n.is_finite())
-            }
-            _ => true,
-        };
-        let mut shapes = cone::tessellate(base, apex, inside);
-        shapes.retain(usable);
-        if shapes.is_empty() {
-            let message = "the cone is too thin, too short or too far out to measure in f32";
-            return Err(reader.error(line, 1, message));
-        }
-        self.add_all(line, reader, shapes)
+        let shape = cone_shape(line, reader)?;
+        self.add(line, reader, shape)
     }
 
     /// Adds shapes with the current material.
@@ -313,34 +296,37 @@ fn polygon_corner(line: &Line, reader: &Reader, smooth: bool) -> Result<(Vec3, V
     Ok((Vec3::from_slice(&n[..3]), normal.normalize()))
 }
 
-/// The two ends of a `c` entity, and whether only its inside is seen.
+/// The cone of a `c` entity.
 ///
 /// The radii are both ≥ 0, one of them > 0; or, by NFF's rule, both
-/// negative, meaning that only the inside of the cone is visible.
-fn cone_ends<'a>(
-    line: &Line<'a>,
-    reader: &mut Reader<'a>,
-) -> Result<(cone::End, cone::End, bool), SceneError> {
-    let [base, apex] = cone_numbers(line, reader)?;
-    let (b, a) = (base.numbers, apex.numbers);
+/// negative, meaning that only the inside of the cone is visible: the cone
+/// of their magnitudes, `inside_out`. The ends are then checked by the rules
+/// of TOML scenes ([`rules::cone`]).
+fn cone_shape<'a>(line: &Line<'a>, reader: &mut Reader<'a>) -> Result<Shape, SceneError> {
+    let [base_end, apex_end] = cone_numbers(line, reader)?;
+    let (b, a) = (base_end.numbers, apex_end.numbers);
     if b[..3] == a[..3] {
-        let message = "the base and the apex coincide: a cone needs an axis of non-zero length";
-        return Err(apex.error(reader, 0, message));
+        return Err(apex_end.error(reader, 0, rules::CONE_AXIS));
     }
-    let inside = b[3] < 0.0 && a[3] < 0.0;
-    if !inside && b[3].min(a[3]) < 0.0 {
-        let wrong = if b[3] < 0.0 { &base } else { &apex };
+    let inside_out = b[3] < 0.0 && a[3] < 0.0;
+    if !inside_out && b[3].min(a[3]) < 0.0 {
+        let wrong = if b[3] < 0.0 { &base_end } else { &apex_end };
         let message = "a radius is negative only if both are (then only the inside is seen)";
         return Err(wrong.error(reader, 3, message));
     }
     if b[3] == 0.0 && a[3] == 0.0 {
-        return Err(apex.error(reader, 3, "a cone needs a radius > 0 at one end at least"));
+        return Err(apex_end.error(reader, 3, rules::CONE_RADII));
     }
-    let end = |n: [f32; 4]| cone::End {
-        center: Vec3::new(n[0], n[1], n[2]),
-        radius: n[3].abs(),
-    };
-    Ok((end(b), end(a), inside))
+    let (base, base_radius) = (Vec3::new(b[0], b[1], b[2]), b[3].abs());
+    let (apex, apex_radius) = (Vec3::new(a[0], a[1], a[2]), a[3].abs());
+    rules::cone(base, base_radius, apex, apex_radius).map_err(|m| reader.error(line, 1, m))?;
+    Ok(Shape::Cone {
+        base,
+        base_radius,
+        apex,
+        apex_radius,
+        inside_out,
+    })
 }
 
 /// The numbers `x y z radius` of one end of a cone, and where they are.
