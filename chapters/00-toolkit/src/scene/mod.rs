@@ -21,6 +21,7 @@ pub use rules::{MAX_IMAGE_SIDE, is_square_sample_count};
 
 pub use effects::Effects;
 pub use error::SceneError;
+pub use file::{BYTES_PER_OBJECT, MemoryLimit, write_sphere_cloud};
 use glam::Vec3;
 
 use crate::Color;
@@ -189,8 +190,21 @@ impl Scene {
     }
 
     /// Parses and validates scene text; `file_name` is used in error messages.
+    /// A scene that would need more memory than the machine has is refused
+    /// before its objects are parsed (see [`Scene::parse_within`]).
     pub fn parse(text: &str, file_name: &str) -> Result<Scene, SceneError> {
-        file::parse(text, file_name)
+        Scene::parse_within(text, file_name, MemoryLimit::of_machine().as_ref())
+    }
+
+    /// [`Scene::parse`], refusing a scene whose estimated memory (about
+    /// [`BYTES_PER_OBJECT`] per object) is more than `limit`; `None` checks
+    /// nothing.
+    pub fn parse_within(
+        text: &str,
+        file_name: &str,
+        limit: Option<&MemoryLimit>,
+    ) -> Result<Scene, SceneError> {
+        file::parse(text, file_name, limit)
     }
 
     /// The material of an object.
