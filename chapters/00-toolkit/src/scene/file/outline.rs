@@ -114,46 +114,55 @@ fn headers(text: &str) -> Vec<(usize, Header)> {
     let mut found = Vec::new();
     // Open `[` and `{` of values.
     let mut depth = 0usize;
-    let mut line_start = Some(0);
-    let mut i = 0;
-    while i < bytes.len() {
-        let b = bytes[i];
-        if b == b'\n' {
-            line_start = Some(i + 1);
-            i += 1;
-            continue;
-        }
-        if matches!(b, b' ' | b'\t' | b'\r') {
-            i += 1;
-            continue;
-        }
-        if let (Some(start), 0) = (line_start, depth) {
-            let header = if b == b'[' {
+    let mut line_start = 0;
+    while line_start < bytes.len() {
+        let mut i = bytes.len() - skip_blanks(&bytes[line_start..]).len();
+        if depth == 0 && i < bytes.len() {
+            let header = if bytes[i] == b'[' {
                 Some(header(&bytes[i..]))
             } else if found.is_empty() && first_key_is_objects(&bytes[i..]) {
                 Some(Header::OtherObjects)
             } else {
                 None
             };
-            found.extend(header.map(|h| (start, h)));
+            found.extend(header.map(|h| (line_start, h)));
         }
-        line_start = None;
-        i = match b {
-            b'#' => line_end(bytes, i),
-            b'"' | b'\'' => string_end(bytes, i),
-            b'[' | b'{' => {
-                depth += 1;
-                i + 1
-            }
-            b']' | b'}' => {
-                depth = depth.saturating_sub(1);
-                i + 1
-            }
-            _ => i + 1,
-        };
+        // The rest of the line, from one byte that matters to the next.
+        loop {
+            let Some(n) = bytes[i..].iter().position(|&b| MATTERS[b as usize]) else {
+                return found;
+            };
+            i += n;
+            i = match bytes[i] {
+                b'\n' => break,
+                b'#' => line_end(bytes, i),
+                b'"' | b'\'' => string_end(bytes, i),
+                b'[' | b'{' => {
+                    depth += 1;
+                    i + 1
+                }
+                _ => {
+                    depth = depth.saturating_sub(1);
+                    i + 1
+                }
+            };
+        }
+        line_start = i + 1;
     }
     found
 }
+
+/// The bytes that change what follows: a newline, a comment, a string, or
+/// an array or inline table opening or closing.
+const MATTERS: [bool; 256] = {
+    let (set, mut matters) = (b"\n#\"'[]{}", [false; 256]);
+    let mut i = 0;
+    while i < set.len() {
+        matters[set[i] as usize] = true;
+        i += 1;
+    }
+    matters
+};
 
 /// What the header at the start of `line` (which starts with `[`) is.
 fn header(line: &[u8]) -> Header {
