@@ -3,28 +3,32 @@
 //!
 //! # Bytes per object
 //!
-//! What a sphere of a scene file costs, on a 64-bit machine:
+//! What one sphere of a scene file costs, on a 64-bit machine:
 //!
-//! | where | bytes | how long |
+//! | where | bytes | alive |
 //! | --- | --- | --- |
-//! | its text in the file (`[[objects]]`, centre, radius, material) | about 90 | while loading |
-//! | one batch of parsed records (toml's spanned values), per thread | about 3,000 × 1,024 | while loading |
-//! | its [`Object`](crate::scene::Object) (a `Shape` of 76 bytes, material, flag) | 96 | always |
-//! | the same, collected per batch before the final list | 96 | while loading |
+//! | its table in the file (`[[objects]]`, type, centre, radius, material) | about 106 | while loading |
+//! | its records in a batch (toml's spanned values); 1,024 objects a batch, one batch per thread | about 3,000 | while its batch is parsed |
+//! | its [`Object`](crate::scene::Object): a `Shape` (76 bytes: the largest, a smooth triangle, has 6 vectors), material index, flag | 96 | always |
+//! | the same, in its batch's list before the scene's list | 96 | while loading |
 //! | chapter 8's BVH: a `Primitive` (the `Shape` again, index, flag) | 96 | while rendering |
-//! | chapter 8's BVH: nodes of 32 bytes, about 2 per primitive (capacity reserved) | 64 | while rendering |
+//! | chapter 8's BVH: nodes of 32 bytes, about 2 per primitive (reserved, touched as built) | up to 64 | while rendering |
 //! | chapter 8's BVH build: an `Item` (box, centre, index) | 48 | while building |
 //!
-//! Measured on 2 million spheres (`cargo run --release -p ch00-toolkit
-//! --example sphere_cloud`, then `raybook render`), the whole process peaks
-//! at about [`BYTES_PER_OBJECT`] per object, text included.
+//! So loading peaks near text + 2 × 96 bytes per object, and building the
+//! BVH near 96 + 48 + 96 + 64 once the text is gone. Measured peak RSS of
+//! `raybook render` (whole process) on scenes from `cargo run --release -p
+//! ch00-toolkit --example sphere_cloud`: 83 MiB for 250,000 spheres, 287 MiB
+//! for 1 million, 570 MiB for 2 million: about 296 bytes more per sphere,
+//! its 106 bytes of text included. The estimate below adds a margin.
 
 use super::outline::Outline;
 use crate::scene::SceneError;
 
-/// The peak memory of loading and rendering one object, its text included
-/// (measured, with a margin: see the module's table).
-pub const BYTES_PER_OBJECT: u64 = 400;
+/// The peak memory of loading and rendering one object, besides the
+/// file's text (measured about 190, with a margin: see the module's table).
+/// A mesh counts as one object here, however many triangles its OBJ has.
+pub const BYTES_PER_OBJECT: u64 = 320;
 
 /// Parsed whole (see [`Outline::unusual`]), toml holds spanned values of the
 /// whole file at once: measured 32 bytes of memory per byte of text.
