@@ -119,3 +119,22 @@ fn this_machine_s_memory_is_known_or_not_checked() {
     }
     assert!(Scene::parse(&cloud(), "cloud.toml").is_ok());
 }
+
+#[test]
+fn a_file_larger_than_the_memory_there_is_is_not_even_read() {
+    let text = cloud();
+    let file = tempfile::NamedTempFile::new().unwrap();
+    std::fs::write(file.path(), &text).unwrap();
+    let limit = |bytes| MemoryLimit {
+        bytes,
+        source: "the test's limit".into(),
+    };
+    let file_size = text.len() as u64;
+    let e = Scene::load_within(file.path(), Some(&limit(file_size - 1))).unwrap_err();
+    assert!(e.message.contains("the file is 2.0 MiB"), "{e}");
+    assert!(e.message.contains("cannot be loaded"), "{e}");
+    // Room for the text, not for the objects: refused after counting them.
+    let e = Scene::load_within(file.path(), Some(&limit(file_size + 1))).unwrap_err();
+    assert!(e.message.contains("20000 objects"), "{e}");
+    assert!(Scene::load_within(file.path(), None).is_ok());
+}

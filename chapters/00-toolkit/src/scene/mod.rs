@@ -182,11 +182,25 @@ pub enum Shape {
 
 impl Scene {
     /// Reads and validates a scene file.
+    /// A file larger than the memory the machine has is refused before it
+    /// is read, and one whose scene would need more before its objects are
+    /// parsed (see [`Scene::parse_within`]).
     pub fn load(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
+        Scene::load_within(path, MemoryLimit::of_machine().as_ref())
+    }
+
+    /// [`Scene::load`] within `limit`; `None` checks nothing.
+    pub fn load_within(
+        path: impl AsRef<Path>,
+        limit: Option<&MemoryLimit>,
+    ) -> Result<Scene, SceneError> {
         let path = path.as_ref();
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::io(&name, &e))?;
-        Scene::parse(&text, &name)
+        let io = |e| SceneError::io(&name, &e);
+        let bytes = std::fs::metadata(path).map_err(io)?.len();
+        file::check_file_size(&name, bytes, limit)?;
+        let text = std::fs::read_to_string(path).map_err(io)?;
+        Scene::parse_within(&text, &name, limit)
     }
 
     /// Parses and validates scene text; `file_name` is used in error messages.

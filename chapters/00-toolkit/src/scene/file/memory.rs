@@ -102,6 +102,31 @@ pub(super) fn check(
     }
 }
 
+/// Refuses a file of `bytes` whose text alone is more than `limit` allows,
+/// before it is read.
+pub(crate) fn check_file_size(
+    file: &str,
+    bytes: u64,
+    limit: Option<&MemoryLimit>,
+) -> Result<(), SceneError> {
+    match limit {
+        Some(limit) if bytes > limit.bytes => Err(SceneError::at(
+            file,
+            "",
+            None,
+            "",
+            format!(
+                "the file is {}, more than the {} of memory available ({}), \
+                 so its scene cannot be loaded; render a smaller scene, or free memory",
+                size(bytes),
+                size(limit.bytes),
+                limit.source
+            ),
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// A number of bytes for people: `1.5 GiB`, `184.0 MiB`, `12 bytes`.
 pub(super) fn size(bytes: u64) -> String {
     const UNITS: [(&str, u64); 3] = [("GiB", 1 << 30), ("MiB", 1 << 20), ("KiB", 1 << 10)];

@@ -29,6 +29,7 @@ mod values;
 
 use serde::Deserialize;
 
+pub(super) use memory::check_file_size;
 pub use memory::{BYTES_PER_OBJECT, MemoryLimit};
 pub use sphere_cloud::write_sphere_cloud;
 
