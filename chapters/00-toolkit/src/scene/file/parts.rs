@@ -78,15 +78,25 @@ pub(super) fn parse_in_parts(
         .collect();
     let head =
         head.and_then(|h| (h.validate(&check)).map_err(|error| Failure::new(Stage::Rules, error)));
+    join(head, batches, outline.objects)
+}
+
+/// The scene with the objects of every batch, in order; or, if a part has
+/// a mistake, the one a parse of the whole file would report.
+fn join(
+    head: Result<Scene, Failure>,
+    batches: Vec<Result<Vec<Object>, Failure>>,
+    objects: usize,
+) -> Result<Scene, SceneError> {
     let failures = head.as_ref().err().into_iter();
     let failures = failures.chain(batches.iter().filter_map(|b| b.as_ref().err()));
     if let Some(first) = failures.min_by_key(|f| f.rank()) {
         return Err(first.error.clone());
     }
-    let mut scene = head.unwrap_or_else(|_| unreachable!("its failure was returned"));
-    scene.objects = Vec::with_capacity(outline.objects);
-    for objects in batches.into_iter().flatten() {
-        scene.objects.extend(objects);
+    let mut scene = head.map_err(|failure| failure.error)?;
+    scene.objects = Vec::with_capacity(objects);
+    for batch in batches.into_iter().flatten() {
+        scene.objects.extend(batch);
     }
     Ok(scene)
 }
