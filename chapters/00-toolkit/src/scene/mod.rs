@@ -182,6 +182,7 @@ pub enum Shape {
 
 impl Scene {
     /// Reads and validates a scene file.
+    ///
     /// A file larger than the memory the machine has is refused before it
     /// is read, and one whose scene would need more before its objects are
     /// parsed (see [`Scene::parse_within`]).
