@@ -1,5 +1,5 @@
 //! Large scenes load object by object: a generated scene of 20,000 spheres
-//! (about twenty batches of the loader) loads completely and in order, an
+//! (many of the loader's batches) loads completely and in order, an
 //! error deep inside it names its own line and object, and a scene larger
 //! than the memory there is is refused before it is parsed.
 //!
@@ -73,7 +73,7 @@ fn with_radius(n: usize, to: &str) -> SceneError {
 
 #[test]
 fn an_error_deep_in_the_file_names_its_line_and_object() {
-    let n = 2_500 + 17; // in the loader's third batch
+    let n = 2_500 + 17; // past several of the loader's batches
     let e = with_radius(n, "radius = -0.5");
     assert_eq!(e.file, "cloud.toml");
     assert_eq!(e.path, format!("objects[{n}].radius"));

@@ -8,7 +8,7 @@
 //! | where | bytes | alive |
 //! | --- | --- | --- |
 //! | its table in the file (`[[objects]]`, type, centre, radius, material) | about 106 | while loading |
-//! | its records in a batch (toml's spanned values); 1,024 objects a batch, one batch per thread | about 3,000 | while its batch is parsed |
+//! | its records in a batch (toml's spanned values); 256 objects a batch, one batch per thread | about 3,000 | while its batch is parsed |
 //! | its [`Object`](crate::scene::Object): a `Shape` (76 bytes: the largest, a smooth triangle, has 6 vectors), material index, flag | 96 | always |
 //! | the same, in its batch's list before the scene's list | 96 | while loading |
 //! | chapter 8's BVH: a `Primitive` (the `Shape` again, index, flag) | 96 | while rendering |

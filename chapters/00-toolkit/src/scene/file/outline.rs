@@ -14,8 +14,10 @@ use std::ops::Range;
 
 /// At most this many `[[objects]]` tables are parsed together: enough to
 /// make the cost of starting a parse negligible, few enough that a batch's
-/// spanned values stay small (about 3 KB per object).
-pub(super) const BATCH: usize = 1024;
+/// spanned values (about 3 KB per object) stay in the processor's cache.
+/// Parsing a million spheres took 1.8 s of CPU time in batches of 256,
+/// 2.1 s in batches of 1024 and 3.1 s in batches of 16384.
+pub(super) const BATCH: usize = 256;
 
 /// Where the parts of a scene file are.
 #[derive(Debug, Default, PartialEq)]

@@ -15,7 +15,7 @@ width = 64
 height = 48
 "#;
 
-/// After the 1500th object: a light between two runs of objects.
+/// After object `BATCH + 100`: a light between two runs of objects.
 const LIGHTS: &str = r#"
 [[lights]]
 type = "point"
@@ -70,7 +70,7 @@ fn scene(broken: Option<usize>, from: &str, to: &str) -> String {
             _ => object(i),
         };
         text += &table;
-        if i == 1500 {
+        if i == outline::BATCH + 100 {
             text += LIGHTS;
         }
     }
@@ -91,7 +91,8 @@ fn broken_table(text: &str, from: &str, to: &str) -> String {
 fn both_ways(text: &str) -> Result<Scene, SceneError> {
     let outline = Outline::of(text);
     assert!(!outline.unusual);
-    assert_eq!(outline.batches.len(), 4); // the light cuts one run in two
+    // Full batches, one cut short by the light: 0.., BATCH.., BATCH + 101.., ...
+    assert_eq!(outline.batches[2].first, outline::BATCH + 101);
     let whole = parse_whole(text, "big.toml");
     let in_parts = parse_in_parts(text, "big.toml", &outline);
     assert_eq!(in_parts, whole);
