@@ -43,6 +43,15 @@ impl Failure {
         Failure { stage, error }
     }
 
+    /// Of two failures, the one a parse of the whole file would report.
+    fn or(self, other: Failure) -> Failure {
+        if other.rank() < self.rank() {
+            other
+        } else {
+            self
+        }
+    }
+
     /// Of two failures, the one with the smaller rank is reported.
     fn rank(&self) -> (Stage, u8, u32, u32) {
         let e = &self.error;
@@ -73,32 +82,47 @@ pub(super) fn parse_in_parts(
     let names: Vec<&String> = head
         .as_ref()
         .map_or(vec![], |h| h.materials.keys().collect());
-    let batches: Vec<_> = (outline.batches.par_iter())
-        .map(|batch| parse_batch(text, file, batch, &names))
-        .collect();
+    let objects = parse_batches(text, file, outline, &names);
     let head =
         head.and_then(|h| (h.validate(&check)).map_err(|error| Failure::new(Stage::Rules, error)));
-    join(head, batches, outline.objects)
+    match (head, objects) {
+        (Ok(scene), Ok(objects)) => Ok(Scene { objects, ..scene }),
+        (Err(a), Err(b)) => Err(a.or(b).error),
+        (Err(failure), _) | (_, Err(failure)) => Err(failure.error),
+    }
 }
 
-/// The scene with the objects of every batch, in order; or, if a part has
-/// a mistake, the one a parse of the whole file would report.
-fn join(
-    head: Result<Scene, Failure>,
-    batches: Vec<Result<Vec<Object>, Failure>>,
-    objects: usize,
-) -> Result<Scene, SceneError> {
-    let failures = head.as_ref().err().into_iter();
-    let failures = failures.chain(batches.iter().filter_map(|b| b.as_ref().err()));
-    if let Some(first) = failures.min_by_key(|f| f.rank()) {
-        return Err(first.error.clone());
+/// Batches parsed at once, on all cores. Their objects join the scene's
+/// list before the next batches are parsed, so that the lists of only a few
+/// batches are alive at a time (and the memory they held is used again).
+const GROUP: usize = 32;
+
+/// The objects of every batch, in order; or the failure to report.
+fn parse_batches(
+    text: &str,
+    file: &str,
+    outline: &Outline,
+    names: &[&String],
+) -> Result<Vec<Object>, Failure> {
+    let mut objects = Vec::with_capacity(outline.objects);
+    let mut failure: Option<Failure> = None;
+    for group in outline.batches.chunks(GROUP) {
+        let parsed: Vec<_> = (group.par_iter())
+            .map(|batch| parse_batch(text, file, batch, names))
+            .collect();
+        for batch in parsed {
+            match batch {
+                Ok(batch) => objects.extend(batch),
+                Err(f) => {
+                    failure = Some(match failure.take() {
+                        Some(earlier) => earlier.or(f),
+                        None => f,
+                    })
+                }
+            }
+        }
     }
-    let mut scene = head.map_err(|failure| failure.error)?;
-    scene.objects = Vec::with_capacity(objects);
-    for batch in batches.into_iter().flatten() {
-        scene.objects.extend(batch);
-    }
-    Ok(scene)
+    failure.map_or(Ok(objects), Err)
 }
 
 /// A batch of `[[objects]]` tables, as a TOML document of its own.
