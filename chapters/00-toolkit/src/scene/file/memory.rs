@@ -10,23 +10,23 @@
 //! | its table in the file (`[[objects]]`, type, centre, radius, material) | about 106 | while loading |
 //! | its records in a batch (toml's spanned values); 256 objects a batch, one batch per thread | about 3,000 | while its batch is parsed |
 //! | its [`Object`](crate::scene::Object): a `Shape` (76 bytes: the largest, a smooth triangle, has 6 vectors), material index, flag | 96 | always |
-//! | the same, in its batch's list before the scene's list | 96 | while loading |
+//! | the same, in its batch's list, for the 32 batches parsed at once | 96 | while its group is parsed |
 //! | chapter 8's BVH: a `Primitive` (the `Shape` again, index, flag) | 96 | while rendering |
 //! | chapter 8's BVH: nodes of 32 bytes, about 2 per primitive (reserved, touched as built) | up to 64 | while rendering |
 //! | chapter 8's BVH build: an `Item` (box, centre, index) | 48 | while building |
 //!
-//! So loading peaks near text + 2 × 96 bytes per object, and building the
-//! BVH near 96 + 48 + 96 + 64 once the text is gone. Measured peak RSS of
+//! So loading peaks near text + 96 bytes per object, and building the BVH
+//! near 96 + 48 + 96 + 64 once the text is gone. Measured peak RSS of
 //! `raybook render` (whole process) on scenes from `cargo run --release -p
-//! ch00-toolkit --example sphere_cloud`: 83 MiB for 250,000 spheres, 287 MiB
-//! for 1 million, 570 MiB for 2 million: about 296 bytes more per sphere,
+//! ch00-toolkit --example sphere_cloud`: 77 MiB for 250,000 spheres, 282 MiB
+//! for 1 million, 557 MiB for 2 million: about 288 bytes more per sphere,
 //! its 106 bytes of text included. The estimate below adds a margin.
 
 use super::outline::Outline;
 use crate::scene::SceneError;
 
 /// The peak memory of loading and rendering one object, besides the
-/// file's text (measured about 190, with a margin: see the module's table).
+/// file's text (measured about 180, with a margin: see the module's table).
 /// A mesh counts as one object here, however many triangles its OBJ has.
 pub const BYTES_PER_OBJECT: u64 = 320;
 
