@@ -15,15 +15,61 @@ use crate::scene::{
     CameraSpec, ImageSpec, Light, Material, MaterialId, Object, Scene, SceneError, Shape, TraceSpec,
 };
 
-/// Makes errors for places in one file.
+/// Makes errors for places in one file, from spans in a part of it parsed
+/// on its own (or in all of it).
 pub(super) struct Checker<'a> {
     pub file: &'a str,
+    /// The whole file's text.
     pub text: &'a str,
+    /// The pieces the parsed text was put together from: where each starts
+    /// in the parsed text and in the file, in order, the first at 0.
+    pub pieces: Vec<(usize, usize)>,
 }
 
-impl Checker<'_> {
+impl<'a> Checker<'a> {
+    /// For text that is all of the file.
+    pub fn whole(file: &'a str, text: &'a str) -> Self {
+        Checker::from(file, text, 0)
+    }
+
+    /// For the file's text from `start` on.
+    pub fn from(file: &'a str, text: &'a str, start: usize) -> Self {
+        let pieces = vec![(0, start)];
+        Checker { file, text, pieces }
+    }
+
+    /// For the file's `ranges` put together, in order.
+    pub fn of_ranges(file: &'a str, text: &'a str, ranges: &[Range<usize>]) -> Self {
+        let mut parsed = 0;
+        let pieces = (ranges.iter())
+            .map(|range| {
+                parsed += range.len();
+                (parsed - range.len(), range.start)
+            })
+            .collect();
+        Checker { file, text, pieces }
+    }
+
+    /// The offset in the file of an offset in the parsed text.
+    fn in_file(&self, offset: usize) -> usize {
+        let piece = self.pieces.partition_point(|&(start, _)| start <= offset);
+        let (parsed, file) = self.pieces[piece.saturating_sub(1)];
+        file + offset - parsed
+    }
+
+    /// An error at a span of the parsed text, if it has one.
+    pub fn error_at(
+        &self,
+        span: Option<Range<usize>>,
+        path: &str,
+        message: impl Into<String>,
+    ) -> SceneError {
+        let span = span.map(|s| self.in_file(s.start)..self.in_file(s.end));
+        SceneError::at(self.file, self.text, span, path, message)
+    }
+
     fn error(&self, span: Range<usize>, path: String, message: impl Into<String>) -> SceneError {
-        SceneError::at(self.file, self.text, Some(span), &path, message)
+        self.error_at(Some(span), &path, message)
     }
 }
 
@@ -31,10 +77,7 @@ impl SceneFile {
     pub(super) fn validate(self, check: &Checker) -> Result<Scene, SceneError> {
         let camera = self.camera.validate(check)?;
         let names: Vec<&String> = self.materials.keys().collect();
-        let objects = (self.objects.iter().enumerate())
-            .map(|(i, object)| object_from_record(object, i, &names, check))
-            .collect::<Result<Vec<_>, _>>()?
-            .concat();
+        let objects = objects_from_records(&self.objects, 0, &names, check)?;
         let lights = (self.lights.iter().enumerate())
             .map(|(i, light)| light_from_record(light, i, check))
             .collect::<Result<Vec<_>, _>>()?;
@@ -130,6 +173,20 @@ impl Record<'_> {
             None => Ok(()),
         }
     }
+}
+
+/// The objects of `records`, the first of which is `objects[first]` of the file.
+pub(super) fn objects_from_records(
+    records: &[Spanned<ObjectFile>],
+    first: usize,
+    materials: &[&String],
+    check: &Checker,
+) -> Result<Vec<Object>, SceneError> {
+    let mut objects = Vec::with_capacity(records.len());
+    for (i, record) in records.iter().enumerate() {
+        objects.extend(object_from_record(record, first + i, materials, check)?);
+    }
+    Ok(objects)
 }
 
 fn object_from_record(
