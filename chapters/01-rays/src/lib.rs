@@ -112,7 +112,8 @@ impl Camera {
 /// positions, one in each cell of a √N × √N grid over the pixel, at a random
 /// point inside its cell ("stratified" or "jittered" sampling: random enough
 /// to break up the stair steps of edges, even enough to leave no gaps). One
-/// sample is the pixel's centre.
+/// sample is the pixel's centre. N is a square number (scene files are
+/// checked for it).
 ///
 /// The random numbers are seeded by the pixel's index `index`, so a pixel
 /// gets the same rays whichever thread renders it, and the picture is the
@@ -123,7 +124,7 @@ pub fn sample_positions(
     samples: u32,
     index: u64,
 ) -> impl Iterator<Item = (f32, f32)> {
-    let side = (samples as f32).sqrt().round() as u32;
+    let side = samples.isqrt(); // samples is a square: N = side²
     // One sample needs no random numbers: it is the centre.
     let mut rng = (side > 1).then(|| Pcg64Mcg::seed_from_u64(index));
     (0..side * side).map(move |cell| {
