@@ -1,8 +1,9 @@
 //! Building the hierarchy: top-down, each node split where the surface area
 //! heuristic expects the cheapest traversal, chosen among a few bins.
 
-use crate::aabb::Aabb;
+use crate::aabb::{Aabb, bounds};
 use crate::toolkit::Vec3;
+use crate::toolkit::scene::Object;
 
 /// Candidate split planes per axis: 16 bins give 15 planes, as good as
 /// trying every primitive's centre for practical scenes and much cheaper.
@@ -34,6 +35,24 @@ pub struct Node {
     pub start: u32,
     /// 0 for an inner node.
     pub count: u32,
+}
+
+/// The items to build over: one for each bounded object, with its box; and
+/// the indices of the unbounded ones (planes), which stay outside the tree.
+pub fn items(objects: &[Object]) -> (Vec<Item>, Vec<usize>) {
+    let mut items = Vec::with_capacity(objects.len());
+    let mut unbounded = Vec::new();
+    for (index, object) in objects.iter().enumerate() {
+        match bounds(&object.shape) {
+            Some(b) => items.push(Item {
+                bounds: b,
+                center: b.center(),
+                index,
+            }),
+            None => unbounded.push(index),
+        }
+    }
+    (items, unbounded)
 }
 
 /// Builds the nodes over `items`, reordering them so that every leaf's

@@ -11,7 +11,7 @@ pub use ch07_termination::{
     Camera, Hit, Ray, Termination, Tracer, World, closest_hit, render, render_whitted, toolkit,
 };
 
-use build::{Item, Node};
+use build::Node;
 use toolkit::scene::{Object, Shape};
 use toolkit::{Image, Scene, Stats};
 
@@ -76,18 +76,11 @@ impl std::fmt::Display for Summary {
 impl Bvh {
     /// Builds the hierarchy over `objects` (binned SAH, see `build.rs`).
     pub fn build(objects: &[Object]) -> Bvh {
-        let mut items = Vec::with_capacity(objects.len());
-        let mut unbounded = Vec::new();
-        for (index, object) in objects.iter().enumerate() {
-            match bounds(&object.shape) {
-                Some(b) => items.push(Item {
-                    bounds: b,
-                    center: b.center(),
-                    index,
-                }),
-                None => unbounded.push(Primitive::of(objects, index)),
-            }
-        }
+        let (mut items, unbounded) = build::items(objects);
+        let unbounded = unbounded
+            .into_iter()
+            .map(|index| Primitive::of(objects, index))
+            .collect();
         let nodes = build::build(&mut items);
         let primitives = items
             .iter()
