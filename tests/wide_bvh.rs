@@ -177,3 +177,21 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn the_complete_tracer_makes_the_same_bytes_on_any_number_of_threads() {
+    use raybook::toolkit::cli::with_threads;
+    let root = workspace_root();
+    let scenes = [
+        nff::load(root.join("scenes/spd/mount-3.nff")).unwrap(),
+        Scene::load(root.join("scenes/peers/tinyraytracer.toml")).unwrap(),
+    ];
+    for scene in scenes {
+        let scene = scene.with_size(64, 48);
+        let render = |threads| with_threads(Some(threads), || raybook::render(&scene, || {}));
+        let (one, one_stats) = render(1).unwrap();
+        let (three, three_stats) = render(3).unwrap();
+        assert_eq!(one.to_png(), three.to_png());
+        assert_eq!(one_stats, three_stats);
+    }
+}
