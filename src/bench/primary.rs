@@ -274,7 +274,7 @@ pub struct Agreement {
     pub hit_or_miss_differs: usize,
     /// Rays both hit.
     pub both_hit: usize,
-    /// Rays both hit whose distances differ by more than [`T_TOLERANCE`]
+    /// Rays both hit whose distances differ by more than `T_TOLERANCE` (10⁻⁴)
     /// of the larger.
     pub t_differs: usize,
 }

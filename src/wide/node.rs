@@ -25,6 +25,9 @@ pub struct Node4 {
 
 const EMPTY_LANE: u32 = u32::MAX;
 
+// Two cache lines, as the docs say.
+const _: () = assert!(std::mem::size_of::<Node4>() == 128);
+
 /// A child of a node: another node, a leaf (a run of primitives), or an
 /// unused lane (whose box no ray enters).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -40,6 +40,9 @@ pub struct Primitive {
     pub shadows: bool,
 }
 
+// The size the docs and the README's table of bytes per object give.
+const _: () = assert!(std::mem::size_of::<Primitive>() == 48);
+
 impl Primitive {
     /// The primitive of a bounded shape; `None` for a plane.
     pub fn of(shape: &Shape, object: usize, shadows: bool) -> Option<Primitive> {
@@ -96,7 +99,8 @@ impl Primitive {
 }
 
 /// A ray with what every triangle test would otherwise recompute: the
-/// shear of the watertight test (the box tests' part is [`Slabs`]).
+/// shear of the watertight test (the box tests' part is
+/// [`Slabs`](super::node::Slabs)).
 #[derive(Debug, Clone)]
 pub struct PreparedRay {
     pub ray: Ray,
