@@ -11,17 +11,9 @@ fn bench(args: &[&str]) -> Output {
         .unwrap()
 }
 
-/// The cells of the table row of `scene`.
-fn row(stdout: &str, scene: &str) -> Vec<String> {
-    let line = stdout
-        .lines()
-        .find(|l| l.starts_with(&format!("| {scene} ")))
-        .unwrap_or_else(|| panic!("no row for {scene} in\n{stdout}"));
-    line.trim_matches('|')
-        .split('|')
-        .map(|c| c.trim().to_owned())
-        .collect()
-}
+#[path = "common/table_row.rs"]
+mod table_row;
+use table_row::row;
 
 #[test]
 fn tinyraytracer_gets_a_row_of_its_own_timed_against_the_program() {

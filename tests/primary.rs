@@ -54,17 +54,9 @@ fn bench(args: &[&str], python: Option<&str>) -> Output {
     command.output().unwrap()
 }
 
-/// The cells of the table row of `scene` in the bench's output.
-fn row(stdout: &str, scene: &str) -> Vec<String> {
-    let line = stdout
-        .lines()
-        .find(|l| l.starts_with(&format!("| {scene} ")))
-        .unwrap_or_else(|| panic!("no row for {scene} in\n{stdout}"));
-    line.trim_matches('|')
-        .split('|')
-        .map(|c| c.trim().to_owned())
-        .collect()
-}
+#[path = "common/table_row.rs"]
+mod table_row;
+use table_row::row;
 
 #[test]
 fn a_tiny_scene_gets_a_row_with_its_rays_hits_and_throughput() {

@@ -1,0 +1,14 @@
+//! Reading the bench's Markdown tables (included by the bench tests with
+//! `#[path]`, so that tests that do not read tables do not carry it).
+
+/// The cells of the table row of `scene` in the bench's output.
+pub fn row(stdout: &str, scene: &str) -> Vec<String> {
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with(&format!("| {scene} ")))
+        .unwrap_or_else(|| panic!("no row for {scene} in\n{stdout}"));
+    line.trim_matches('|')
+        .split('|')
+        .map(|c| c.trim().to_owned())
+        .collect()
+}
