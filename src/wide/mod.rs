@@ -48,7 +48,8 @@ impl<'a> WideBvh<'a> {
     /// Builds chapter 8's binary tree over `objects` and collapses it.
     pub fn build(objects: &'a [Object]) -> WideBvh<'a> {
         let (mut items, planes) = build::items(objects);
-        let binary = if items.len() <= FLAT_MAX {
+        let small = items.len() <= FLAT_MAX;
+        let binary = if small {
             flat(&items)
         } else {
             build::build(&mut items)
@@ -67,7 +68,7 @@ impl<'a> WideBvh<'a> {
         }
         WideBvh {
             objects,
-            flat: primitives.len() <= FLAT_MAX,
+            flat: small,
             nodes,
             primitives,
             planes,
