@@ -4,14 +4,16 @@
 //! takes that same tree (the same binned-SAH build) and collapses it, two
 //! levels into one, to nodes of four children; a step then tests four boxes
 //! in one slab test of four lanes (`node.rs`). Beside that:
-//! - primitives are stored compactly in leaf order (48 bytes each, against
-//!   chapter 8's copy of the whole `Shape`), and the scene's own shape is
-//!   read only for the one hit that is chosen, with the barycentric weights
-//!   its triangle test found (chapter 2's `hit_at` finds them again);
+//! - a leaf's primitives are stored in packets of four spheres or four
+//!   triangles, lane by lane, and tested four at a time (`packet.rs`): only
+//!   their geometry, not chapter 8's copy of the whole `Shape`. The scene's
+//!   own shape is read only for the one hit that is chosen, with the
+//!   barycentric weights its triangle test found (chapter 2's `hit_at`
+//!   finds them again);
 //! - the per-ray parts of the slab and triangle tests are worked out once
 //!   per ray, not once per box or triangle (`primitive.rs`);
-//! - a sphere is first tested in f32, which rules out most rays that miss
-//!   it, before chapter 2's test in f64;
+//! - spheres are first tested in f32, which rules out most rays that miss
+//!   them, before chapter 2's test in f64;
 //! - the traversal stack is not filled before use (`traverse.rs`);
 //! - a scene of a few objects gets no tree: they are tested in turn.
 //!
@@ -20,6 +22,7 @@
 //! What it buys is measured in chapter 8's text and the README.
 
 mod node;
+mod packet;
 mod primitive;
 mod traverse;
 
@@ -29,6 +32,7 @@ use ch08_bvh::build::{self, Item};
 use crate::toolkit::scene::{Object, Shape};
 use crate::tracer::{Hit, Ray, World, hit_with_weights};
 use node::{Child, Node4};
+use packet::Packet;
 use primitive::{PreparedRay, Primitive, Weights};
 
 /// A four-wide bounding volume hierarchy over a scene's objects.
@@ -37,7 +41,9 @@ pub struct WideBvh<'a> {
     objects: &'a [Object],
     /// The root is node 0 (if there is any bounded object).
     nodes: Vec<Node4>,
-    primitives: Vec<Primitive>,
+    /// The leaves' primitives, in packets of four of a kind, leaf after
+    /// leaf; a leaf's lane in a node gives its first packet and how many.
+    packets: Vec<Packet>,
     /// Planes: no box, so every ray tests them, as in chapter 2.
     planes: Vec<usize>,
     /// A small scene: all primitives are tested in turn, with no box test.
@@ -63,14 +69,21 @@ impl<'a> WideBvh<'a> {
             .collect();
         drop(items);
         let mut nodes = Vec::with_capacity(binary.len() / 2 + 1);
+        let mut packets = Vec::with_capacity(primitives.len() / 2 + 1);
         if !binary.is_empty() {
-            collapse(&binary, 0, &mut nodes);
+            let mut tree = Collapse {
+                binary: &binary,
+                primitives: &primitives,
+                nodes: &mut nodes,
+                packets: &mut packets,
+            };
+            tree.node(0);
         }
         WideBvh {
             objects,
             flat: small,
             nodes,
-            primitives,
+            packets,
             planes,
         }
     }
@@ -106,40 +119,65 @@ fn flat(items: &[Item]) -> Vec<build::Node> {
         .collect()
 }
 
-/// Appends the four-wide node standing for binary node `index` and the
-/// subtree below it; returns its index.
-///
-/// Its lanes start as the binary node's two children. While a lane holds
-/// an inner node and a lane is free, the inner child with the largest box
-/// (the one rays most often enter) is replaced by its own two children.
-/// A binary leaf at the root becomes a node with one leaf lane.
-fn collapse(binary: &[build::Node], index: usize, nodes: &mut Vec<Node4>) -> u32 {
-    let at = nodes.len();
-    nodes.push(Node4::EMPTY);
-    let node = &binary[index];
-    let mut lanes = if node.count > 0 {
-        vec![index]
-    } else {
-        vec![index + 1, node.start as usize]
-    };
-    while lanes.len() < 4 {
-        let inner = lanes
-            .iter()
-            .enumerate()
-            .filter(|&(_, &n)| binary[n].count == 0)
-            .max_by(|a, b| area(binary, *a.1).total_cmp(&area(binary, *b.1)));
-        let Some((lane, &n)) = inner else { break };
-        lanes.swap_remove(lane);
-        lanes.extend([n + 1, binary[n].start as usize]);
-    }
-    for (lane, &n) in lanes.iter().enumerate() {
-        let child = match binary[n] {
-            build::Node { count: 0, .. } => Child::Node(collapse(binary, n, nodes)),
-            build::Node { start, count, .. } => Child::Leaf { start, count },
+/// Chapter 8's binary tree, being collapsed into four-wide nodes and the
+/// leaves' packets.
+struct Collapse<'t> {
+    binary: &'t [build::Node],
+    /// In the order of the binary tree's leaves.
+    primitives: &'t [Primitive],
+    nodes: &'t mut Vec<Node4>,
+    packets: &'t mut Vec<Packet>,
+}
+
+impl Collapse<'_> {
+    /// Appends the four-wide node standing for binary node `index` and the
+    /// subtree below it; returns its index.
+    ///
+    /// Its lanes start as the binary node's two children. While a lane
+    /// holds an inner node and a lane is free, the inner child with the
+    /// largest box (the one rays most often enter) is replaced by its own
+    /// two children. A binary leaf at the root becomes a node with one leaf
+    /// lane.
+    fn node(&mut self, index: usize) -> u32 {
+        let binary = self.binary;
+        let at = self.nodes.len();
+        self.nodes.push(Node4::EMPTY);
+        let node = &binary[index];
+        let mut lanes = if node.count > 0 {
+            vec![index]
+        } else {
+            vec![index + 1, node.start as usize]
         };
-        nodes[at].set(lane, binary[n].bounds, child);
+        while lanes.len() < 4 {
+            let inner = lanes
+                .iter()
+                .enumerate()
+                .filter(|&(_, &n)| binary[n].count == 0)
+                .max_by(|a, b| area(binary, *a.1).total_cmp(&area(binary, *b.1)));
+            let Some((lane, &n)) = inner else { break };
+            lanes.swap_remove(lane);
+            lanes.extend([n + 1, binary[n].start as usize]);
+        }
+        for (lane, &n) in lanes.iter().enumerate() {
+            let child = match binary[n] {
+                build::Node { count: 0, .. } => Child::Node(self.node(n)),
+                build::Node { start, count, .. } => self.leaf(start, count),
+            };
+            self.nodes[at].set(lane, binary[n].bounds, child);
+        }
+        at as u32
     }
-    at as u32
+
+    /// The packets of the binary leaf of `count` primitives from `start`.
+    fn leaf(&mut self, start: u32, count: u32) -> Child {
+        let first = self.packets.len();
+        let (start, end) = (start as usize, (start + count) as usize);
+        packet::pack(&self.primitives[start..end], self.packets);
+        Child::Leaf {
+            start: first as u32,
+            count: (self.packets.len() - first) as u32,
+        }
+    }
 }
 
 fn area(binary: &[build::Node], n: usize) -> f32 {

@@ -6,7 +6,7 @@ use glam::Vec4;
 
 use ch08_bvh::Aabb;
 
-use crate::tracer::Ray;
+use super::primitive::PreparedRay;
 
 /// Chapter 8's factor that makes the slab test's far distance an upper
 /// bound of the exact one despite rounding (1 + 2γ₃).
@@ -118,11 +118,11 @@ pub struct Slabs {
 
 impl Slabs {
     #[inline]
-    pub fn new(ray: &Ray) -> Slabs {
-        let inverse = ray.direction.recip();
+    pub fn new(ray: &PreparedRay) -> Slabs {
+        let inverse = ray.ray.direction.recip();
         let face = |i: f32| if i.is_sign_negative() { 3 } else { 0 };
         Slabs {
-            origin: ray.origin.to_array().map(Vec4::splat),
+            origin: ray.origin,
             inverse: inverse.to_array().map(Vec4::splat),
             near_face: inverse.to_array().map(face),
         }

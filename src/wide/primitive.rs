@@ -3,11 +3,11 @@
 
 use std::cell::OnceCell;
 
-use glam::{Mat3A, Vec3A};
+use glam::Vec4;
 
 use crate::toolkit::Vec3;
 use crate::toolkit::scene::Shape;
-use crate::tracer::{Ray, intersect_cone, intersect_sphere};
+use crate::tracer::Ray;
 
 /// An object's geometry as intersection needs it: a sphere, a triangle's
 /// corners (a smooth triangle's normals matter only once the hit is chosen,
@@ -30,7 +30,8 @@ pub enum Geometry {
     },
 }
 
-/// A bounded object, stored in the order of the tree's leaves: 48 bytes.
+/// A bounded object, in the order of the tree's leaves, before its leaf is
+/// packed (`packet.rs`): 48 bytes, held only while building.
 #[derive(Debug, Clone, Copy)]
 pub struct Primitive {
     pub geometry: Geometry,
@@ -72,30 +73,6 @@ impl Primitive {
             shadows,
         })
     }
-
-    /// Where the ray meets it in (t_min, t_max): chapter 2's `intersect`, to
-    /// the last bit, with the triangle test's per-ray work done once; with
-    /// a triangle's barycentric weights, which chapter 2 works out again.
-    #[inline(always)]
-    pub fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<(f32, Weights)> {
-        match self.geometry {
-            Geometry::Sphere { center, radius } => {
-                let t = intersect_sphere_quickly(center, radius, &ray.ray, t_min, t_max)?;
-                Some((t, Weights::NONE))
-            }
-            Geometry::Triangle { vertices } => ray.shear().intersect(vertices, t_min, t_max),
-            Geometry::Cone {
-                base,
-                base_radius,
-                apex,
-                apex_radius,
-            } => {
-                let t =
-                    intersect_cone(base, base_radius, apex, apex_radius, &ray.ray, t_min, t_max)?;
-                Some((t, Weights::NONE))
-            }
-        }
-    }
 }
 
 /// A ray with what every triangle test would otherwise recompute: the
@@ -104,6 +81,9 @@ impl Primitive {
 #[derive(Debug, Clone)]
 pub struct PreparedRay {
     pub ray: Ray,
+    /// r0's and rd's coordinates, each in all four lanes.
+    pub origin: [Vec4; 3],
+    pub direction: [Vec4; 3],
     /// Worked out at the first triangle the ray meets: a ray that meets
     /// only spheres never needs it.
     shear: OnceCell<Shear>,
@@ -114,6 +94,8 @@ impl PreparedRay {
     pub fn new(ray: &Ray) -> PreparedRay {
         PreparedRay {
             ray: *ray,
+            origin: ray.origin.to_array().map(Vec4::splat),
+            direction: ray.direction.to_array().map(Vec4::splat),
             shear: OnceCell::new(),
         }
     }
@@ -129,48 +111,49 @@ impl PreparedRay {
 /// `intersect_triangle`, after Woop, Benthin and Wald, JCGT 2013): the ray
 /// becomes the +z axis from the origin. Chapter 2 works it out for every
 /// triangle; it depends on the ray only, so here it is worked out once.
-///
-/// Chapter 2 picks coordinates kx, ky, kz of p − r0 and computes
-/// x = p[kx] − sx·p[kz], y = p[ky] − sy·p[kz], z = sz·p[kz]. Here each is a
-/// dot product with a row that holds 1, −sx (or −sy, or sz) and zeros: the
-/// same products and sums, since adding a zero term changes no bit (but a
-/// zero's sign, which no test here looks at), and no coordinate is picked
-/// by index, which costs a branch each time.
 #[derive(Debug, Clone, Copy)]
 pub struct Shear {
-    origin: Vec3A,
-    /// The rows e_kx − sx·e_kz, e_ky − sy·e_kz and sz·e_kz (e_i the unit
-    /// vectors), so that x, y, z = rows · (p − r0).
-    rows: Mat3A,
+    origin: Vec3,
+    /// The axes kx, ky, kz: z the one along which the ray travels fastest,
+    /// x and y the others, in the order that keeps a triangle's winding.
+    axes: [usize; 3],
+    /// sx = rd[kx]/rd[kz], sy = rd[ky]/rd[kz], sz = 1/rd[kz].
+    scale: [f32; 3],
 }
 
 impl Shear {
     fn new(ray: &Ray) -> Shear {
-        let d = ray.direction.to_array();
+        let d = ray.direction.to_array(); // indexing a Vec3 is a branch per index
         let kz = ray.direction.abs().max_position();
         let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
         if d[kz] < 0.0 {
             std::mem::swap(&mut kx, &mut ky);
         }
-        // Built as arrays: indexing a Vec3 is a branch per index.
-        let (mut x, mut y, mut z) = ([0.0; 3], [0.0; 3], [0.0; 3]);
-        (x[kx], x[kz]) = (1.0, -(d[kx] / d[kz]));
-        (y[ky], y[kz]) = (1.0, -(d[ky] / d[kz]));
-        z[kz] = 1.0 / d[kz];
-        let rows = Mat3A::from_cols_array_2d(&[x, y, z]).transpose();
         Shear {
-            origin: ray.origin.into(),
-            rows,
+            origin: ray.origin,
+            axes: [kx, ky, kz],
+            scale: [d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]],
         }
     }
 
-    /// A corner in the ray's space: x, y across the ray, z along it. The
-    /// matrix product sums each row's three products left to right, as a
-    /// dot product does, in four lanes at once.
+    /// A corner in the ray's space, as chapter 2 computes it with p the
+    /// corner less r0: x = p[kx] − sx·p[kz], y = p[ky] − sy·p[kz],
+    /// z = sz·p[kz].
     #[inline]
-    fn project(&self, p: Vec3) -> (f32, f32, f32) {
-        let p = self.rows * (Vec3A::from(p) - self.origin);
-        (p.x, p.y, p.z)
+    fn project(&self, corner: Vec3) -> (f32, f32, f32) {
+        let p = (corner - self.origin).to_array();
+        let ([kx, ky, kz], [sx, sy, sz]) = (self.axes, self.scale);
+        (p[kx] - sx * p[kz], p[ky] - sy * p[kz], sz * p[kz])
+    }
+
+    /// [`project`](Self::project) for four corners at once, each coordinate
+    /// in four lanes, given r0's coordinates in four lanes.
+    #[inline(always)]
+    pub fn project4(&self, origin: &[Vec4; 3], corner: [Vec4; 3]) -> (Vec4, Vec4, Vec4) {
+        let p = [0, 1, 2].map(|axis| corner[axis] - origin[axis]);
+        let [kx, ky, kz] = self.axes;
+        let [sx, sy, sz] = self.scale.map(Vec4::splat);
+        (p[kx] - sx * p[kz], p[ky] - sy * p[kz], sz * p[kz])
     }
 
     /// Chapter 2's `intersect_triangle`, the same operations in the same
@@ -216,6 +199,10 @@ pub struct Weights {
 }
 
 impl Weights {
+    pub fn new(v: f32, w: f32, determinant: f32) -> Weights {
+        Weights { v, w, determinant }
+    }
+
     /// For shapes that have none: (0, 0).
     pub const NONE: Weights = Weights {
         v: 0.0,
@@ -231,31 +218,4 @@ impl Weights {
 
 fn edge_f64(px: f32, py: f32, qx: f32, qy: f32) -> f32 {
     (px as f64 * qy as f64 - py as f64 * qx as f64) as f32
-}
-
-/// Chapter 2's `intersect_sphere`, to the last bit, after a test in f32
-/// that rules out most rays that miss: those that pass the centre farther
-/// than r, by a margin that covers every rounding.
-///
-/// With f = r0 − c and rd of length 1 (up to rounding), the ray passes the
-/// centre at distance |h|, h = f − (f·rd)·rd. Computed in f32, h is off by
-/// a few units in the last place of |f| (f32::EPSILON·|f| each); 64 of them
-/// is a wide margin. So if |h| > r + 64·ε·|f|, the exact |h| exceeds r too,
-/// and so does chapter 2's (in f64, far more exact): its discriminant
-/// 4a(r² − h·h) is negative, and it answers None as this does.
-#[inline]
-fn intersect_sphere_quickly(
-    center: Vec3,
-    radius: f32,
-    ray: &Ray,
-    t_min: f32,
-    t_max: f32,
-) -> Option<f32> {
-    let f = ray.origin - center;
-    let h = f - f.dot(ray.direction) * ray.direction;
-    let margin = radius + 64.0 * f32::EPSILON * f.abs().max_element();
-    if h.length_squared() > margin * margin {
-        return None;
-    }
-    intersect_sphere(center, radius, ray, t_min, t_max)
 }

@@ -6,7 +6,8 @@ use ch08_bvh::MAX_DEPTH;
 
 use super::WideBvh;
 use super::node::{Child, Node4, Slabs};
-use super::primitive::{PreparedRay, Primitive, Weights};
+use super::packet::Packet;
+use super::primitive::{PreparedRay, Weights};
 
 /// Room for the lanes still to visit: each level down pops one entry and
 /// pushes at most four, and no path is longer than chapter 8's tree's.
@@ -53,10 +54,10 @@ impl WideBvh<'_> {
             return;
         }
         if self.flat {
-            self.offer_leaf(&self.primitives, ray, t_min, closest);
+            offer_leaf(&self.packets, ray, t_min, closest);
             return;
         }
-        let slabs = Slabs::new(&ray.ray);
+        let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<(Child, f32), STACK>::new();
         stack.push((Child::Node(0), t_min));
         while let Some((child, t_entry)) = stack.pop() {
@@ -70,25 +71,9 @@ impl WideBvh<'_> {
                 }
                 Child::Leaf { start, count } => {
                     let (start, end) = (start as usize, (start + count) as usize);
-                    self.offer_leaf(&self.primitives[start..end], ray, t_min, closest);
+                    offer_leaf(&self.packets[start..end], ray, t_min, closest);
                 }
                 Child::Empty => {}
-            }
-        }
-    }
-
-    /// Offers `closest` the hits of a leaf's primitives.
-    #[inline]
-    fn offer_leaf(
-        &self,
-        primitives: &[Primitive],
-        ray: &PreparedRay,
-        t_min: f32,
-        closest: &mut Closest,
-    ) {
-        for primitive in primitives {
-            if let Some(hit) = primitive.intersect(ray, t_min, closest.limit()) {
-                closest.offer(hit, primitive.object);
             }
         }
     }
@@ -100,9 +85,9 @@ impl WideBvh<'_> {
             return false;
         }
         if self.flat {
-            return blocks(&self.primitives, ray, t_min, t_max);
+            return blocks(&self.packets, ray, t_min, t_max);
         }
-        let slabs = Slabs::new(&ray.ray);
+        let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<u32, STACK>::new();
         stack.push(0);
         while let Some(index) = stack.pop() {
@@ -115,10 +100,7 @@ impl WideBvh<'_> {
                     Child::Node(child) => stack.push(child),
                     Child::Leaf { start, count } => {
                         let (start, end) = (start as usize, (start + count) as usize);
-                        let blocked = self.primitives[start..end]
-                            .iter()
-                            .any(|p| p.shadows && p.intersect(ray, t_min, t_max).is_some());
-                        if blocked {
+                        if blocks(&self.packets[start..end], ray, t_min, t_max) {
                             return true;
                         }
                     }
@@ -130,12 +112,18 @@ impl WideBvh<'_> {
     }
 }
 
-/// Does one of `primitives` cast a shadow on the ray in (t_min, t_max)?
+/// Offers `closest` the hits of a leaf's packets.
 #[inline]
-fn blocks(primitives: &[Primitive], ray: &PreparedRay, t_min: f32, t_max: f32) -> bool {
-    primitives
-        .iter()
-        .any(|p| p.shadows && p.intersect(ray, t_min, t_max).is_some())
+fn offer_leaf(packets: &[Packet], ray: &PreparedRay, t_min: f32, closest: &mut Closest) {
+    for packet in packets {
+        packet.offer_hits(ray, t_min, closest);
+    }
+}
+
+/// Does a primitive of `packets` cast a shadow on the ray in (t_min, t_max)?
+#[inline]
+fn blocks(packets: &[Packet], ray: &PreparedRay, t_min: f32, t_max: f32) -> bool {
+    packets.iter().any(|p| p.blocks(ray, t_min, t_max))
 }
 
 /// Pushes the lanes of `node` that the ray enters in [t_min, limit], the

@@ -1,0 +1,329 @@
+//! A leaf's primitives in packets of four of one kind, stored lane by lane
+//! ("structure of arrays"), so that one test in four lanes (SSE on x86-64,
+//! through glam's `Vec4`) tests four spheres or four triangles at once.
+//!
+//! The four-lane tests do the scalar tests' operations in the same order in
+//! each lane, so each lane's answer is the scalar test's to the last bit:
+//! - four triangles go through chapter 2's watertight test together, up to
+//!   t and the barycentric weights; a lane on an edge in f32 (an edge
+//!   function exactly 0) is finished alone, in f64, as chapter 2 does;
+//! - four spheres go through the f32 test that rules out rays that pass
+//!   too far from the centre ([`might_hit`](Spheres::might_hit)); the few
+//!   lanes left go one by one through chapter 2's f64 test.
+//!
+//! Cones are rare (the SPD's rings and tree) and stay one to a packet.
+
+use glam::{BVec4A, Vec4};
+
+use super::primitive::{Geometry, PreparedRay, Primitive, Weights};
+use super::traverse::Closest;
+use crate::toolkit::Vec3;
+use crate::tracer::{intersect_cone, intersect_sphere};
+
+/// Up to four primitives of one kind, and which scene objects they are.
+#[derive(Debug, Clone, Copy)]
+pub struct Packet {
+    pub shapes: Shapes,
+    /// Each lane's index in the scene's objects.
+    object: [u32; 4],
+    /// Bit i: lane i holds a primitive.
+    used: u32,
+    /// Bit i: lane i's primitive blocks shadow rays.
+    shadows: u32,
+}
+
+// Three cache lines, as the README's table of bytes per object gives: 48
+// bytes an object in a full packet.
+const _: () = assert!(std::mem::size_of::<Packet>() == 192);
+
+/// A packet's geometry, lane by lane.
+#[derive(Debug, Clone, Copy)]
+pub enum Shapes {
+    Spheres(Spheres),
+    Triangles(Triangles),
+    Cone(Cone),
+}
+
+/// One cone: its ends and their radii.
+#[derive(Debug, Clone, Copy)]
+pub struct Cone {
+    base: Vec3,
+    base_radius: f32,
+    apex: Vec3,
+    apex_radius: f32,
+}
+
+/// Four spheres: centres' x, y, z and radii.
+#[derive(Debug, Clone, Copy)]
+pub struct Spheres {
+    center: [Vec4; 3],
+    radius: Vec4,
+}
+
+/// Four triangles: each corner's x, y, z.
+#[derive(Debug, Clone, Copy)]
+pub struct Triangles {
+    corners: [[Vec4; 3]; 3],
+}
+
+/// Appends the packets of a leaf's `primitives` to `packets`: spheres four
+/// at a time, then triangles four at a time, then each cone. (The order
+/// within a leaf changes no answer: the closest hit is chosen by t, then by
+/// object index.)
+pub fn pack(primitives: &[Primitive], packets: &mut Vec<Packet>) {
+    let is_sphere = |p: &&Primitive| matches!(p.geometry, Geometry::Sphere { .. });
+    let is_triangle = |p: &&Primitive| matches!(p.geometry, Geometry::Triangle { .. });
+    let spheres: Vec<_> = primitives.iter().filter(is_sphere).collect();
+    let triangles: Vec<_> = primitives.iter().filter(is_triangle).collect();
+    for four in spheres.chunks(4) {
+        packets.push(Packet::of(four, Shapes::Spheres(Spheres::of(four))));
+    }
+    for four in triangles.chunks(4) {
+        packets.push(Packet::of(four, Shapes::Triangles(Triangles::of(four))));
+    }
+    for p in primitives {
+        if let Geometry::Cone {
+            base,
+            base_radius,
+            apex,
+            apex_radius,
+        } = p.geometry
+        {
+            let cone = Cone {
+                base,
+                base_radius,
+                apex,
+                apex_radius,
+            };
+            packets.push(Packet::of(&[p], Shapes::Cone(cone)));
+        }
+    }
+}
+
+impl Packet {
+    fn of(primitives: &[&Primitive], shapes: Shapes) -> Packet {
+        let mut packet = Packet {
+            shapes,
+            object: [0; 4],
+            used: 0,
+            shadows: 0,
+        };
+        for (lane, p) in primitives.iter().enumerate() {
+            packet.object[lane] = p.object;
+            packet.used |= 1 << lane;
+            packet.shadows |= u32::from(p.shadows) << lane;
+        }
+        packet
+    }
+
+    /// Offers `closest` each primitive the ray meets in (t_min,
+    /// closest.limit()), the limit asked again before each offer: chapter
+    /// 2's answers, lane by lane.
+    #[inline(always)]
+    pub fn offer_hits(&self, ray: &PreparedRay, t_min: f32, closest: &mut Closest) {
+        match &self.shapes {
+            Shapes::Spheres(spheres) => {
+                for lane in lanes(spheres.might_hit(ray).bitmask() & self.used) {
+                    let (center, radius) = spheres.get(lane);
+                    if let Some(t) =
+                        intersect_sphere(center, radius, &ray.ray, t_min, closest.limit())
+                    {
+                        closest.offer((t, Weights::NONE), self.object[lane]);
+                    }
+                }
+            }
+            Shapes::Triangles(triangles) => {
+                let shear = ray.shear();
+                let found = triangles.intersect(ray, t_min, closest.limit());
+                for lane in lanes(found.hit & self.used) {
+                    if found.t[lane] < closest.limit() {
+                        closest.offer((found.t[lane], found.weights(lane)), self.object[lane]);
+                    }
+                }
+                for lane in lanes(found.on_edge & self.used) {
+                    let corners = triangles.get(lane);
+                    if let Some((t, weights)) = shear.intersect(corners, t_min, closest.limit()) {
+                        closest.offer((t, weights), self.object[lane]);
+                    }
+                }
+            }
+            Shapes::Cone(cone) => {
+                if let Some(t) = cone.intersect(ray, t_min, closest.limit()) {
+                    closest.offer((t, Weights::NONE), self.object[0]);
+                }
+            }
+        }
+    }
+
+    /// Does one of the packet's shadow-casting primitives meet the ray in
+    /// (t_min, t_max)?
+    #[inline(always)]
+    pub fn blocks(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> bool {
+        let casting = self.used & self.shadows;
+        if casting == 0 {
+            return false;
+        }
+        match &self.shapes {
+            Shapes::Spheres(spheres) => {
+                lanes(spheres.might_hit(ray).bitmask() & casting).any(|lane| {
+                    let (center, radius) = spheres.get(lane);
+                    intersect_sphere(center, radius, &ray.ray, t_min, t_max).is_some()
+                })
+            }
+            Shapes::Triangles(triangles) => {
+                let shear = ray.shear();
+                let found = triangles.intersect(ray, t_min, t_max);
+                found.hit & casting != 0
+                    || lanes(found.on_edge & casting)
+                        .any(|lane| shear.intersect(triangles.get(lane), t_min, t_max).is_some())
+            }
+            Shapes::Cone(cone) => cone.intersect(ray, t_min, t_max).is_some(),
+        }
+    }
+}
+
+impl Cone {
+    #[inline(always)]
+    fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<f32> {
+        let Cone {
+            base,
+            base_radius,
+            apex,
+            apex_radius,
+        } = *self;
+        intersect_cone(base, base_radius, apex, apex_radius, &ray.ray, t_min, t_max)
+    }
+}
+
+/// The lanes whose bits are set in `mask`, lowest first.
+#[inline(always)]
+fn lanes(mut mask: u32) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        (mask != 0).then(|| {
+            let lane = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            lane
+        })
+    })
+}
+
+impl Spheres {
+    fn of(spheres: &[&Primitive]) -> Spheres {
+        let mut packet = Spheres {
+            center: [Vec4::ZERO; 3],
+            radius: Vec4::ZERO,
+        };
+        for (lane, p) in spheres.iter().enumerate() {
+            let Geometry::Sphere { center, radius } = p.geometry else {
+                unreachable!("only spheres are packed as spheres")
+            };
+            for axis in 0..3 {
+                packet.center[axis][lane] = center[axis];
+            }
+            packet.radius[lane] = radius;
+        }
+        packet
+    }
+
+    fn get(&self, lane: usize) -> (Vec3, f32) {
+        let [x, y, z] = self.center.map(|c| c[lane]);
+        (Vec3::new(x, y, z), self.radius[lane])
+    }
+
+    /// Lanes whose sphere the ray may meet: all but those it passes farther
+    /// from the centre than r, by a margin that covers every rounding.
+    ///
+    /// With f = r0 − c and rd of length 1 (up to rounding), the ray passes
+    /// the centre at distance |h|, h = f − (f·rd)·rd. Computed in f32, h is
+    /// off by a few units in the last place of |f| (f32::EPSILON·|f| each);
+    /// 64 of them is a wide margin. So if |h| > r + 64·ε·|f|, the exact |h|
+    /// exceeds r too, and so does chapter 2's (in f64, far more exact): its
+    /// discriminant 4a(r² − h·h) is negative, and it answers None.
+    #[inline(always)]
+    fn might_hit(&self, ray: &PreparedRay) -> BVec4A {
+        let [ox, oy, oz] = ray.origin;
+        let [dx, dy, dz] = ray.direction;
+        let (fx, fy, fz) = (
+            ox - self.center[0],
+            oy - self.center[1],
+            oz - self.center[2],
+        );
+        let along = fx * dx + fy * dy + fz * dz;
+        let (hx, hy, hz) = (fx - along * dx, fy - along * dy, fz - along * dz);
+        let size = fx.abs().max(fy.abs()).max(fz.abs());
+        let margin = self.radius + 64.0 * f32::EPSILON * size;
+        (hx * hx + hy * hy + hz * hz).cmple(margin * margin)
+    }
+}
+
+/// What the four-lane triangle test found.
+struct Found {
+    /// Bit i: lane i's triangle is met in (t_min, t_max) at t[i].
+    hit: u32,
+    /// Bit i: lane i is on an edge in f32, to be decided in f64.
+    on_edge: u32,
+    t: Vec4,
+    v: Vec4,
+    w: Vec4,
+    determinant: Vec4,
+}
+
+impl Found {
+    fn weights(&self, lane: usize) -> Weights {
+        Weights::new(self.v[lane], self.w[lane], self.determinant[lane])
+    }
+}
+
+impl Triangles {
+    fn of(triangles: &[&Primitive]) -> Triangles {
+        let mut packet = Triangles {
+            corners: [[Vec4::ZERO; 3]; 3],
+        };
+        for (lane, p) in triangles.iter().enumerate() {
+            let Geometry::Triangle { vertices } = p.geometry else {
+                unreachable!("only triangles are packed as triangles")
+            };
+            for (corner, vertex) in vertices.iter().enumerate() {
+                for axis in 0..3 {
+                    packet.corners[corner][axis][lane] = vertex[axis];
+                }
+            }
+        }
+        packet
+    }
+
+    fn get(&self, lane: usize) -> [Vec3; 3] {
+        self.corners
+            .map(|[x, y, z]| Vec3::new(x[lane], y[lane], z[lane]))
+    }
+
+    /// Chapter 2's watertight test ([`Shear::intersect`]) in four lanes:
+    /// each corner projected into the ray's space by the same products
+    /// and sums, the same edge functions, determinant and t.
+    #[inline(always)]
+    fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Found {
+        let shear = ray.shear();
+        let [(x0, y0, z0), (x1, y1, z1), (x2, y2, z2)] = self
+            .corners
+            .map(|corner| shear.project4(&ray.origin, corner));
+        let u = x2 * y1 - y2 * x1;
+        let v = x0 * y2 - y0 * x2;
+        let w = x1 * y0 - y1 * x0;
+        let zero = Vec4::ZERO;
+        let on_edge = u.cmpeq(zero) | v.cmpeq(zero) | w.cmpeq(zero);
+        let negative = u.cmplt(zero) | v.cmplt(zero) | w.cmplt(zero);
+        let positive = u.cmpgt(zero) | v.cmpgt(zero) | w.cmpgt(zero);
+        let determinant = u + v + w;
+        let t = (u * z0 + v * z1 + w * z2) / determinant;
+        let inside = !(negative & positive) & determinant.cmpne(zero);
+        let within = t.is_finite_mask() & t.cmpgt(Vec4::splat(t_min)) & t.cmplt(Vec4::splat(t_max));
+        Found {
+            hit: (inside & within & !on_edge).bitmask(),
+            on_edge: on_edge.bitmask(),
+            t,
+            v,
+            w,
+            determinant,
+        }
+    }
+}
