@@ -303,9 +303,10 @@ impl Triangles {
     #[inline(always)]
     fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Found {
         let shear = ray.shear();
-        let [(x0, y0, z0), (x1, y1, z1), (x2, y2, z2)] = self
-            .corners
-            .map(|corner| shear.project4(&ray.origin, corner));
+        let [p0, p1, p2] = &self.corners;
+        let (x0, y0, z0) = shear.project4(&ray.origin, p0);
+        let (x1, y1, z1) = shear.project4(&ray.origin, p1);
+        let (x2, y2, z2) = shear.project4(&ray.origin, p2);
         let u = x2 * y1 - y2 * x1;
         let v = x0 * y2 - y0 * x2;
         let w = x1 * y0 - y1 * x0;

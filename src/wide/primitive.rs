@@ -149,11 +149,19 @@ impl Shear {
     /// [`project`](Self::project) for four corners at once, each coordinate
     /// in four lanes, given r0's coordinates in four lanes.
     #[inline(always)]
-    pub fn project4(&self, origin: &[Vec4; 3], corner: [Vec4; 3]) -> (Vec4, Vec4, Vec4) {
-        let p = [0, 1, 2].map(|axis| corner[axis] - origin[axis]);
+    pub fn project4(&self, origin: &[Vec4; 3], corner: &[Vec4; 3]) -> (Vec4, Vec4, Vec4) {
+        let p = [
+            corner[0] - origin[0],
+            corner[1] - origin[1],
+            corner[2] - origin[2],
+        ];
         let [kx, ky, kz] = self.axes;
-        let [sx, sy, sz] = self.scale.map(Vec4::splat);
-        (p[kx] - sx * p[kz], p[ky] - sy * p[kz], sz * p[kz])
+        let [sx, sy, sz] = self.scale;
+        (
+            p[kx] - Vec4::splat(sx) * p[kz],
+            p[ky] - Vec4::splat(sy) * p[kz],
+            Vec4::splat(sz) * p[kz],
+        )
     }
 
     /// Chapter 2's `intersect_triangle`, the same operations in the same

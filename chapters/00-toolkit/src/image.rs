@@ -28,14 +28,17 @@ impl Image {
         pixel: impl Fn(u32, u32, &mut Stats) -> Color + Sync,
         on_row: impl Fn() + Sync,
     ) -> (Image, Stats) {
-        let mut pixels = vec![Color::ZERO; width as usize * height as usize];
+        // Zeros as plain arrays of f32 come from the system already zeroed,
+        // untouched: each page is first touched by the thread that renders
+        // into it, not one by one on this thread beforehand.
+        let mut pixels = vec![[0.0f32; 3]; width as usize * height as usize];
         let stats = pixels
             .par_chunks_mut(width as usize)
             .enumerate()
             .map(|(y, row)| {
                 let mut stats = Stats::default();
                 for (x, out) in row.iter_mut().enumerate() {
-                    *out = pixel(x as u32, y as u32, &mut stats);
+                    *out = pixel(x as u32, y as u32, &mut stats).to_array();
                 }
                 on_row();
                 stats
@@ -44,7 +47,7 @@ impl Image {
         let image = Image {
             width,
             height,
-            pixels,
+            pixels: pixels.into_iter().map(Color::from_array).collect(),
         };
         (image, stats)
     }
