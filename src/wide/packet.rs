@@ -18,7 +18,7 @@ use glam::{BVec4A, Vec4};
 use super::primitive::{Geometry, PreparedRay, Primitive, Weights};
 use super::traverse::Closest;
 use crate::toolkit::Vec3;
-use crate::tracer::{intersect_cone, intersect_sphere};
+use crate::tracer::{Ray, intersect_cone, intersect_sphere};
 
 /// Up to four primitives of one kind, and which scene objects they are.
 #[derive(Debug, Clone, Copy)]
@@ -126,7 +126,7 @@ impl Packet {
                 for lane in lanes(spheres.might_hit(ray).bitmask() & self.used) {
                     let (center, radius) = spheres.get(lane);
                     if let Some(t) =
-                        intersect_sphere(center, radius, &ray.ray, t_min, closest.limit())
+                        intersect_sphere_ahead(center, radius, ray.ray, t_min, closest.limit())
                     {
                         closest.offer((t, Weights::NONE), self.object[lane]);
                     }
@@ -142,7 +142,9 @@ impl Packet {
                 }
                 for lane in lanes(found.on_edge & self.used) {
                     let corners = triangles.get(lane);
-                    if let Some((t, weights)) = shear.intersect(corners, t_min, closest.limit()) {
+                    if let Some((t, weights)) =
+                        shear.intersect(ray.ray.origin, corners, t_min, closest.limit())
+                    {
                         closest.offer((t, weights), self.object[lane]);
                     }
                 }
@@ -167,15 +169,18 @@ impl Packet {
             Shapes::Spheres(spheres) => {
                 lanes(spheres.might_hit(ray).bitmask() & casting).any(|lane| {
                     let (center, radius) = spheres.get(lane);
-                    intersect_sphere(center, radius, &ray.ray, t_min, t_max).is_some()
+                    intersect_sphere_ahead(center, radius, ray.ray, t_min, t_max).is_some()
                 })
             }
             Shapes::Triangles(triangles) => {
                 let shear = ray.shear();
                 let found = triangles.intersect(ray, t_min, t_max);
                 found.hit & casting != 0
-                    || lanes(found.on_edge & casting)
-                        .any(|lane| shear.intersect(triangles.get(lane), t_min, t_max).is_some())
+                    || lanes(found.on_edge & casting).any(|lane| {
+                        shear
+                            .intersect(ray.ray.origin, triangles.get(lane), t_min, t_max)
+                            .is_some()
+                    })
             }
             Shapes::Cone(cone) => cone.intersect(ray, t_min, t_max).is_some(),
         }
@@ -191,7 +196,7 @@ impl Cone {
             apex,
             apex_radius,
         } = *self;
-        intersect_cone(base, base_radius, apex, apex_radius, &ray.ray, t_min, t_max)
+        intersect_cone(base, base_radius, apex, apex_radius, ray.ray, t_min, t_max)
     }
 }
 
@@ -254,6 +259,36 @@ impl Spheres {
         let margin = self.radius + 64.0 * f32::EPSILON * size;
         (hx * hx + hy * hy + hz * hz).cmple(margin * margin)
     }
+}
+
+/// Chapter 2's `intersect_sphere`, without its divisions and square root
+/// where their answer is known beforehand: for a sphere behind the ray's
+/// origin and a ray that starts at t_min ≥ 0 (every ray the tracer casts).
+///
+/// Chapter 2 solves a·t² + b·t + c = 0 with a = rd·rd, b = 2 f·rd,
+/// c = f·f − ρ² (f = r0 − m, in f64). If b > 0 (the ray moves away from
+/// the centre) and c ≥ 0 (the origin is not inside), its
+/// q = −(b + √Δ)/2 is negative, so both of its roots, c/q and q/a, are
+/// ≤ 0 (rounding keeps their signs): neither lies beyond t_min. b and c
+/// are computed here exactly as chapter 2 computes them, so the answer is
+/// its answer. It is the common case of a shadow ray or a mirror ray
+/// leaving a sphere, which always meets its own sphere's line.
+#[inline(always)]
+fn intersect_sphere_ahead(
+    center: Vec3,
+    radius: f32,
+    ray: &Ray,
+    t_min: f32,
+    t_max: f32,
+) -> Option<f32> {
+    let f = ray.origin.as_dvec3() - center.as_dvec3();
+    let rd = ray.direction.as_dvec3();
+    let rho = radius as f64;
+    let (b, c) = (2.0 * f.dot(rd), f.dot(f) - rho * rho);
+    if t_min >= 0.0 && b > 0.0 && c >= 0.0 {
+        return None;
+    }
+    intersect_sphere(center, radius, ray, t_min, t_max)
 }
 
 /// What the four-lane triangle test found.
