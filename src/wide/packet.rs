@@ -136,8 +136,9 @@ impl Packet {
                 let shear = ray.shear();
                 let found = triangles.intersect(ray, t_min, closest.limit());
                 for lane in lanes(found.hit & self.used) {
-                    if found.t[lane] < closest.limit() {
-                        closest.offer((found.t[lane], found.weights(lane)), self.object[lane]);
+                    let t = found.t.to_array()[lane];
+                    if t < closest.limit() {
+                        closest.offer((t, found.weights(lane)), self.object[lane]);
                     }
                 }
                 for lane in lanes(found.on_edge & self.used) {
@@ -231,8 +232,9 @@ impl Spheres {
     }
 
     fn get(&self, lane: usize) -> (Vec3, f32) {
-        let [x, y, z] = self.center.map(|c| c[lane]);
-        (Vec3::new(x, y, z), self.radius[lane])
+        // Lanes are read from arrays: indexing a Vec4 is a jump table.
+        let [x, y, z] = self.center.map(|c| c.to_array()[lane]);
+        (Vec3::new(x, y, z), self.radius.to_array()[lane])
     }
 
     /// Lanes whose sphere the ray may meet: all but those it passes farther
@@ -305,7 +307,8 @@ struct Found {
 
 impl Found {
     fn weights(&self, lane: usize) -> Weights {
-        Weights::new(self.v[lane], self.w[lane], self.determinant[lane])
+        let lane_of = |v: Vec4| v.to_array()[lane];
+        Weights::new(lane_of(self.v), lane_of(self.w), lane_of(self.determinant))
     }
 }
 
@@ -329,7 +332,7 @@ impl Triangles {
 
     fn get(&self, lane: usize) -> [Vec3; 3] {
         self.corners
-            .map(|[x, y, z]| Vec3::new(x[lane], y[lane], z[lane]))
+            .map(|c| Vec3::from_array(c.map(|axis| axis.to_array()[lane])))
     }
 
     /// Chapter 2's watertight test ([`Shear::intersect`]) in four lanes:

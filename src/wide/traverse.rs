@@ -17,24 +17,29 @@ const STACK: usize = 3 * MAX_DEPTH + 4;
 /// t, and of equal t's the object that comes first in the scene.
 #[derive(Debug, Clone, Copy)]
 pub struct Closest {
-    t_max: f32,
+    /// Where hits are looked for: below t_max or, once one is found, up to
+    /// and including its t (a tie may still win by its index). Kept, not
+    /// worked out at each test: `next_up` is a few branches.
+    limit: f32,
     /// t, object index, and the hit's barycentric weights if a triangle's.
     pub found: Option<(f32, u32, Weights)>,
 }
 
 impl Closest {
     pub fn new(t_max: f32) -> Closest {
-        Closest { t_max, found: None }
+        Closest {
+            limit: t_max,
+            found: None,
+        }
     }
 
-    /// Hits are looked for below t_max or, once one is found, up to and
-    /// including its t (a tie may still win by its index).
+    /// Hits are looked for below this.
     #[inline]
     pub fn limit(&self) -> f32 {
-        self.found.map_or(self.t_max, |(t, _, _)| t.next_up())
+        self.limit
     }
 
-    /// A hit at t ≤ limit(): kept if nearer, or as near and earlier.
+    /// A hit at t < limit(): kept if nearer, or as near and earlier.
     #[inline]
     pub fn offer(&mut self, (t, weights): (f32, Weights), object: u32) {
         if self
@@ -42,6 +47,7 @@ impl Closest {
             .is_none_or(|(best, first, _)| t < best || object < first)
         {
             self.found = Some((t, object, weights));
+            self.limit = t.next_up();
         }
     }
 }
@@ -141,6 +147,7 @@ fn push_nearest_last(
     stack: &mut ArrayVec<(Child, f32), STACK>,
 ) {
     let (near, mut mask) = node.enter(ray, t_min, limit);
+    let near = near.to_array(); // indexing a Vec4 is a jump table
     let first = stack.len();
     while mask != 0 {
         let lane = mask.trailing_zeros() as usize;
