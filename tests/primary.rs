@@ -79,7 +79,7 @@ fn a_tiny_scene_gets_a_row_with_its_rays_hits_and_throughput() {
         String::from_utf8_lossy(&out.stderr)
     );
     let cells = row(&stdout, "tetra-3");
-    assert_eq!(cells.len(), 12, "{cells:?}");
+    assert_eq!(cells.len(), 14, "{cells:?}");
     assert_eq!(cells[1], "64", "primitives");
     assert_eq!(cells[2], "256", "16×16 rays");
     let shown = rendered_hits(&spd("tetra-3.nff", 16, 16));
@@ -93,7 +93,12 @@ fn a_tiny_scene_gets_a_row_with_its_rays_hits_and_throughput() {
         let mrays: f64 = cell.parse().unwrap();
         assert!(mrays > 0.0, "column {column}: {cell} Mrays/s");
     }
-    assert_eq!(cells[7], "not run (--no-embree)");
+    for (column, cell) in cells.iter().enumerate().skip(7).take(2) {
+        assert_eq!(cell, "not run (--no-embree)", "column {column}");
+    }
+    for (column, cell) in cells.iter().enumerate().skip(9) {
+        assert_eq!(cell, "–", "column {column}");
+    }
     assert_eq!(
         stdout.lines().filter(|l| l.starts_with("| ")).count(),
         2,
@@ -109,10 +114,11 @@ fn without_embree_the_table_says_how_to_install_it() {
     );
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{stdout}");
-    assert_eq!(
-        row(&stdout, "tetra-3")[7],
-        "not installed: pip install embreex numpy"
-    );
+    let cells = row(&stdout, "tetra-3");
+    let why = "not installed: pip install embreex numpy";
+    assert_eq!(cells[7], why, "one thread");
+    assert_eq!(cells[8], why, "per thread, on as many threads as raybook");
+    assert_eq!(cells[11], "–", "no ratio of the same threads");
 }
 
 /// Only where embreex is installed ($RAYBOOK_PYTHON, else python3) does
@@ -134,11 +140,12 @@ fn where_embree_runs_it_agrees_with_raybook_and_spheres_are_left_out() {
     }
     // "99.999 % (3 differ)"
     let percent = |cell: &str| -> f64 { cell.split(" %").next().unwrap().parse().unwrap() };
-    assert!(tetra[7].parse::<f64>().unwrap() > 0.0, "{tetra:?}");
-    assert!(percent(&tetra[10]) >= 99.9, "hit/miss: {tetra:?}");
-    assert!(percent(&tetra[11]) >= 99.9, "distances: {tetra:?}");
-    assert_eq!(
-        row(&stdout, "balls-1")[7],
-        "n/a (embreex has triangles only)"
-    );
+    for column in [7, 8, 9, 10, 11] {
+        assert!(tetra[column].parse::<f64>().unwrap() > 0.0, "{tetra:?}");
+    }
+    assert!(percent(&tetra[12]) >= 99.9, "hit/miss: {tetra:?}");
+    assert!(percent(&tetra[13]) >= 99.9, "distances: {tetra:?}");
+    let balls = row(&stdout, "balls-1");
+    assert_eq!(balls[7], "n/a (embreex has triangles only)");
+    assert_eq!(balls[8], balls[7]);
 }
