@@ -1,6 +1,8 @@
 //! `raybook bench --primary`: the rays it times are the renderer's primary
 //! rays, it reports a row per scene, and it goes on without Embree.
-//! (No timing is asserted: speed is shown by the bench, not by tests.)
+//! (No timing is asserted: speed is shown by the bench, not by tests.
+//! Where Embree's numbers are checked, a fake Python stands in for it and
+//! reports times fixed in advance.)
 
 use std::process::{Command, Output};
 
@@ -148,4 +150,95 @@ fn where_embree_runs_it_agrees_with_raybook_and_spheres_are_left_out() {
     let balls = row(&stdout, "balls-1");
     assert_eq!(balls[7], "n/a (embreex has triangles only)");
     assert_eq!(balls[8], balls[7]);
+}
+
+/// Embree's columns, from a fake Python whose report is known (a shell
+/// script: Unix only).
+#[cfg(unix)]
+mod fake_embree {
+    use super::{bench, row};
+
+    /// A stand-in for a Python with embreex, as a shell script: it answers
+    /// `--check`, reports three one-thread runs (median 0.0002 s) and, when
+    /// asked for 2 processes, three runs of 2 (median 0.0004 s), in the lines
+    /// `benches/embree_primary.py` prints, and writes a distance (0) per ray.
+    const FAKE_PYTHON: &str = r#"#!/bin/sh
+    # $1 is the script, $2 the folder (or --check), $3 the runs, $4 the processes.
+    if [ "$2" = "--check" ]; then echo "embreex fake"; exit 0; fi
+    bytes=$(wc -c < "$2/origins.f32")
+    head -c $((bytes / 3)) /dev/zero > "$2/t.f32"
+    echo "seconds 0.0009 cpu 0.0009"
+    echo "seconds 0.0002 cpu 0.0002"
+    echo "seconds 0.0001 cpu 0.0001"
+    if [ "$4" = 2 ]; then
+      echo "parallel 2 seconds 0.0001 cpu 0.0002 busy 0.0001 0.0001"
+      echo "parallel 2 seconds 0.0004 cpu 0.0008 busy 0.0004 0.0003"
+      echo "parallel 2 seconds 0.0010 cpu 0.0020 busy 0.0010 0.0009"
+    fi
+    "#;
+
+    /// The fake Python, written into a folder of its own; its path.
+    fn fake_python(name: &str) -> std::path::PathBuf {
+        use std::os::unix::fs::PermissionsExt;
+        let folder = std::env::temp_dir().join(format!("raybook-{name}-{}", std::process::id()));
+        std::fs::create_dir_all(&folder).unwrap();
+        let path = folder.join("python");
+        std::fs::write(&path, FAKE_PYTHON).unwrap();
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
+        path
+    }
+
+    /// The table's number in `cell`.
+    fn number(cell: &str) -> f64 {
+        cell.parse()
+            .unwrap_or_else(|_| panic!("{cell:?} is not a number"))
+    }
+
+    /// The row of tetra-3 at 16×16 (256 rays), with the fake Embree.
+    fn fake_row(threads: &str) -> Vec<String> {
+        let python = fake_python(&format!("primary-fake-python-{threads}"));
+        let out = bench(
+            &[
+                "--only",
+                "tetra-3",
+                "--size",
+                "16",
+                "--runs",
+                "3",
+                "--threads",
+                threads,
+            ],
+            Some(python.to_str().unwrap()),
+        );
+        let _ = std::fs::remove_dir_all(python.parent().unwrap());
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{stdout}\n{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        row(&stdout, "tetra-3")
+    }
+
+    #[test]
+    fn embrees_threads_are_the_median_of_its_parallel_lines_per_process() {
+        let cells = fake_row("2");
+        // 256 rays: in 0.0002 s, 1.28 Mrays/s; in 0.0004 s on 2, 0.32 each.
+        assert_eq!(cells[7], "1.28", "Embree, 1 thread: {cells:?}");
+        assert_eq!(cells[8], "0.32", "Embree per thread, 2 threads: {cells:?}");
+        let per_thread = number(&cells[6]);
+        // Each ratio within what rounding the cells to 0.01 allows.
+        let near =
+            |cell: &str, expected: f64| (number(cell) - expected).abs() < 0.01 + 0.005 / 0.32;
+        assert!(near(&cells[10], per_thread / 1.28), "{cells:?}");
+        assert!(near(&cells[11], per_thread / 0.32), "{cells:?}");
+    }
+
+    #[test]
+    fn on_one_thread_embrees_threads_are_its_one_thread() {
+        // The fake prints no `parallel` lines unless asked for 2 processes.
+        let cells = fake_row("1");
+        assert_eq!(cells[8], cells[7], "{cells:?}");
+        assert_eq!(cells[11], cells[10], "{cells:?}");
+    }
 }
