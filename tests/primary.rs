@@ -160,7 +160,8 @@ mod fake_embree {
 
     /// A stand-in for a Python with embreex, as a shell script: it answers
     /// `--check`, reports three one-thread runs (median 0.0002 s) and, when
-    /// asked for 2 processes, three runs of 2 (median 0.0004 s), in the lines
+    /// asked for 2 processes, three runs of 2 (median 0.0004 s; the slower
+    /// process's time 1, 4/3 and 2 times the faster's), in the lines
     /// `benches/embree_primary.py` prints, and writes a distance (0) per ray.
     const FAKE_PYTHON: &str = r#"#!/bin/sh
     # $1 is the script, $2 the folder (or --check), $3 the runs, $4 the processes.
@@ -173,7 +174,7 @@ mod fake_embree {
     if [ "$4" = 2 ]; then
       echo "parallel 2 seconds 0.0001 cpu 0.0002 busy 0.0001 0.0001"
       echo "parallel 2 seconds 0.0004 cpu 0.0008 busy 0.0004 0.0003"
-      echo "parallel 2 seconds 0.0010 cpu 0.0020 busy 0.0010 0.0009"
+      echo "parallel 2 seconds 0.0010 cpu 0.0015 busy 0.0010 0.0005"
     fi
     "#;
 
@@ -194,8 +195,9 @@ mod fake_embree {
             .unwrap_or_else(|_| panic!("{cell:?} is not a number"))
     }
 
-    /// The row of tetra-3 at 16×16 (256 rays), with the fake Embree.
-    fn fake_row(threads: &str) -> Vec<String> {
+    /// The bench's report on tetra-3 at 16×16 (256 rays), with the fake
+    /// Embree.
+    fn fake_report(threads: &str) -> String {
         let python = fake_python(&format!("primary-fake-python-{threads}"));
         let out = bench(
             &[
@@ -217,12 +219,13 @@ mod fake_embree {
             "{stdout}\n{}",
             String::from_utf8_lossy(&out.stderr)
         );
-        row(&stdout, "tetra-3")
+        stdout.into_owned()
     }
 
     #[test]
     fn embrees_threads_are_the_median_of_its_parallel_lines_per_process() {
-        let cells = fake_row("2");
+        let report = fake_report("2");
+        let cells = row(&report, "tetra-3");
         // 256 rays: in 0.0002 s, 1.28 Mrays/s; in 0.0004 s on 2, 0.32 each.
         assert_eq!(cells[7], "1.28", "Embree, 1 thread: {cells:?}");
         assert_eq!(cells[8], "0.32", "Embree per thread, 2 threads: {cells:?}");
@@ -232,13 +235,19 @@ mod fake_embree {
             |cell: &str, expected: f64| (number(cell) - expected).abs() < 0.01 + 0.005 / 0.32;
         assert!(near(&cells[10], per_thread / 1.28), "{cells:?}");
         assert!(near(&cells[11], per_thread / 0.32), "{cells:?}");
+        assert!(
+            report.contains("note: tetra-3: Embree's slowest process took 1.33 times"),
+            "the median unevenness of the shares: {report}"
+        );
     }
 
     #[test]
     fn on_one_thread_embrees_threads_are_its_one_thread() {
         // The fake prints no `parallel` lines unless asked for 2 processes.
-        let cells = fake_row("1");
+        let report = fake_report("1");
+        let cells = row(&report, "tetra-3");
         assert_eq!(cells[8], cells[7], "{cells:?}");
         assert_eq!(cells[11], cells[10], "{cells:?}");
+        assert!(!report.contains("slowest process"), "{report}");
     }
 }

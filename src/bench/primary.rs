@@ -18,7 +18,11 @@
 //! second while the others are busy. raybook's throughput per thread on
 //! `--threads` threads is then fairly compared only with Embree's per
 //! process on as many processes, both under the same contention; the table
-//! keeps the comparison with Embree's one thread beside it.
+//! keeps the comparison with Embree's one thread beside it. Each process
+//! traces a contiguous share of the rays, which may cost unlike amounts,
+//! where raybook's threads share out the work as they go: the report notes
+//! where Embree's slowest process took more than 1.1 times its fastest's
+//! time, since that lowers Embree's throughput on the threads.
 
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -44,6 +48,10 @@ const NOT_INSTALLED: &str = "not installed: pip install embreex numpy";
 
 /// What the Embree column says for a scene with spheres or planes.
 const TRIANGLES_ONLY: &str = "n/a (embreex has triangles only)";
+
+/// Above this ratio of Embree's slowest process's time to its fastest's,
+/// the report notes how unevenly its shares of the rays cost.
+const UNEVEN: f64 = 1.1;
 
 /// Two distances agree if they differ by at most this fraction.
 const T_TOLERANCE: f32 = 1e-4;
@@ -119,6 +127,8 @@ enum EmbreeResult {
         /// Median time of as many processes as raybook's threads, each
         /// tracing its share of the rays (one thread's time if that is 1).
         parallel_seconds: f64,
+        /// How many times as long as the fastest process the slowest took.
+        uneven: f64,
         /// How its answers agree with raybook's.
         agreement: Agreement,
     },
@@ -131,6 +141,12 @@ struct EmbreeTimes {
     /// Median time of the processes at once, from the first one's start to
     /// the last one's end.
     parallel_seconds: f64,
+    /// The median over the runs of how many times as long as the fastest
+    /// process the slowest took on its share (1 for one process). Each
+    /// process traces a contiguous share of the rays, rows of the image,
+    /// and rows cost unlike amounts: the slowest sets the time, while
+    /// raybook's threads share out the work as they go (rayon).
+    uneven: f64,
     /// Each ray's hit distance, +∞ for a miss (from the one thread).
     t: Vec<f32>,
 }
@@ -237,14 +253,17 @@ impl Embree {
         let report = String::from_utf8_lossy(&output.stdout);
         let seconds = median_seconds(&report, "seconds ", 1)?;
         // One process is the one thread: the script runs no more.
-        let parallel_seconds = if processes > 1 {
-            median_seconds(
-                &report,
-                &format!("parallel {processes} seconds "),
-                processes,
-            )?
+        let parallel = format!("parallel {processes} seconds ");
+        let (parallel_seconds, uneven) = if processes > 1 {
+            let uneven = busy_ratios(&report, &parallel);
+            let uneven = if uneven.is_empty() {
+                1.0
+            } else {
+                median(uneven)
+            };
+            (median_seconds(&report, &parallel, processes)?, uneven)
         } else {
-            seconds
+            (seconds, 1.0)
         };
         let t = read_f32(&folder.join("t.f32"))?;
         if t.len() != rays.len() {
@@ -257,6 +276,7 @@ impl Embree {
         Ok(EmbreeTimes {
             seconds,
             parallel_seconds,
+            uneven,
             t,
         })
     }
@@ -284,6 +304,24 @@ fn median_seconds(report: &str, prefix: &str, cores: u32) -> Result<f64, String>
         eprintln!("warning: Embree used more than {cores} cores' time while timed");
     }
     Ok(median(wall))
+}
+
+/// For each of the report's lines that start with `prefix` and end in
+/// `busy B1 .. BN` (each process's time on its share), the slowest's time
+/// over the fastest's.
+fn busy_ratios(report: &str, prefix: &str) -> Vec<f64> {
+    let ratio = |rest: &str| {
+        let busy = rest.split_whitespace().skip_while(|w| *w != "busy").skip(1);
+        let busy: Vec<f64> = busy.filter_map(|w| w.parse().ok()).collect();
+        let slowest = busy.iter().copied().reduce(f64::max)?;
+        let fastest = busy.iter().copied().reduce(f64::min)?;
+        Some(slowest / fastest)
+    };
+    report
+        .lines()
+        .filter_map(|l| l.strip_prefix(prefix))
+        .filter_map(ratio)
+        .collect()
 }
 
 /// Writes numbers as raw little-endian f32.
@@ -433,6 +471,18 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
             );
         }
     }
+    for t in &timings {
+        if let EmbreeResult::Timed { uneven, .. } = t.embree
+            && uneven > UNEVEN
+        {
+            out += &format!(
+                "\nnote: {}: Embree's slowest process took {uneven:.2} times as long as its \
+                 fastest (median of the runs): each traces a contiguous share of the rows, \
+                 and its time on {threads} threads is the slowest's",
+                t.name
+            );
+        }
+    }
     Ok(out)
 }
 
@@ -479,6 +529,7 @@ fn time_scene(
             EmbreeResult::Timed {
                 seconds: theirs.seconds,
                 parallel_seconds: theirs.parallel_seconds,
+                uneven: theirs.uneven,
                 agreement: agreement(&t, &theirs.t),
             }
         }
@@ -558,6 +609,7 @@ impl PrimaryTiming {
                 seconds,
                 parallel_seconds,
                 agreement,
+                ..
             } => {
                 let (one, each) = (mrays(*seconds), mrays(*parallel_seconds) / threads);
                 let percent =
@@ -594,7 +646,7 @@ impl PrimaryTiming {
 
 #[cfg(test)]
 mod tests {
-    use super::{agreement, median_seconds, report_field};
+    use super::{agreement, busy_ratios, median_seconds, report_field};
 
     #[test]
     fn the_times_are_read_from_the_scripts_report() {
@@ -609,6 +661,11 @@ mod tests {
         assert_eq!(median_seconds(report, "seconds ", 1), Ok(0.875));
         assert!(median_seconds("nothing", "seconds ", 1).is_err());
         assert!(median_seconds(report, "parallel 4 seconds ", 4).is_err());
+        assert_eq!(busy_ratios(report, two), [0.75 / 0.7]);
+        assert!(
+            busy_ratios(report, "parallel 3 seconds ").is_empty(),
+            "no busy times"
+        );
     }
 
     #[test]
