@@ -26,8 +26,9 @@ PROCESSES threads; where a machine's cores slow each other down (as
 hyperthreads sharing a core do), one thread's throughput is not what each
 of them gets when all are busy. So that Embree is measured under the same
 contention, the script also traces the rays in PROCESSES worker processes
-at once: processes, not threads, because `EmbreeScene.run` holds Python's
-GIL, so two threads would take turns. Each worker builds and commits its
+at once: processes, not threads, so that no lock of Python's (its GIL) can
+make them take turns (embreex 4.4 does release the GIL in its C loop, but
+processes need no such promise). Each worker builds and commits its
 own scene (not timed), then, RUNS times, all wait at a barrier and each
 traces its contiguous share of the rays (the rays split into PROCESSES
 runs of as equal a length as can be; rows of the image, so the shares need
