@@ -13,9 +13,9 @@
 //! miss, and the distance), so that the table shows they did the same work.
 //!
 //! Why Embree runs in `--threads` processes too: on a machine whose cores
-//! slow each other down (hyperthreads, or this 2-core VM's cores, which
-//! behave like them on floating-point work), a thread traces fewer rays a
-//! second while the others are busy. raybook's throughput per thread on
+//! slow each other down (hyperthreads sharing a core, or a VM's cores when
+//! its host is busy), a thread traces fewer rays a second while the others
+//! are busy. raybook's throughput per thread on
 //! `--threads` threads is then fairly compared only with Embree's per
 //! process on as many processes, both under the same contention; the table
 //! keeps the comparison with Embree's one thread beside it. Each process
