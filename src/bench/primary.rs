@@ -7,10 +7,22 @@
 //! BVH, [`crate::wide`]), on one thread
 //! and on `--threads` threads; Embree traces them through the PyPI package
 //! embreex, run by `benches/embree_primary.py` in a Python that can import
-//! it. Only the tracing is timed on either side: not making the rays, not
-//! building either BVH, not passing the files. The two answers are compared
-//! ray by ray (hit or miss, and the distance), so that the table shows they
-//! did the same work.
+//! it, on one thread and in `--threads` processes at once. Only the tracing
+//! is timed on either side: not making the rays, not building either BVH,
+//! not passing the files. The two answers are compared ray by ray (hit or
+//! miss, and the distance), so that the table shows they did the same work.
+//!
+//! Why Embree runs in `--threads` processes too: on a machine whose cores
+//! slow each other down (hyperthreads sharing a core, or a VM's cores when
+//! its host is busy), a thread traces fewer rays a second while the others
+//! are busy. raybook's throughput per thread on
+//! `--threads` threads is then fairly compared only with Embree's per
+//! process on as many processes, both under the same contention; the table
+//! keeps the comparison with Embree's one thread beside it. Each process
+//! traces a contiguous share of the rays, which may cost unlike amounts,
+//! where raybook's threads share out the work as they go: the report notes
+//! where Embree's slowest process took more than 1.1 times its fastest's
+//! time, since that lowers Embree's throughput on the threads.
 
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -36,6 +48,10 @@ const NOT_INSTALLED: &str = "not installed: pip install embreex numpy";
 
 /// What the Embree column says for a scene with spheres or planes.
 const TRIANGLES_ONLY: &str = "n/a (embreex has triangles only)";
+
+/// Above this ratio of Embree's slowest process's time to its fastest's,
+/// the report notes how unevenly its shares of the rays cost.
+const UNEVEN: f64 = 1.1;
 
 /// Two distances agree if they differ by at most this fraction.
 const T_TOLERANCE: f32 = 1e-4;
@@ -108,9 +124,31 @@ enum EmbreeResult {
     Timed {
         /// Median time of one thread.
         seconds: f64,
+        /// Median time of as many processes as raybook's threads, each
+        /// tracing its share of the rays (one thread's time if that is 1).
+        parallel_seconds: f64,
+        /// How many times as long as the fastest process the slowest took.
+        uneven: f64,
         /// How its answers agree with raybook's.
         agreement: Agreement,
     },
+}
+
+/// What Embree's script measured on one scene.
+struct EmbreeTimes {
+    /// Median time of one thread.
+    seconds: f64,
+    /// Median time of the processes at once, from the first one's start to
+    /// the last one's end.
+    parallel_seconds: f64,
+    /// The median over the runs of how many times as long as the fastest
+    /// process the slowest took on its share (1 for one process). Each
+    /// process traces a contiguous share of the rays, rows of the image,
+    /// and rows cost unlike amounts: the slowest sets the time, while
+    /// raybook's threads share out the work as they go (rayon).
+    uneven: f64,
+    /// Each ray's hit distance, +∞ for a miss (from the one thread).
+    t: Vec<f32>,
 }
 
 /// Where Embree can run: a Python that imports embreex, and the script.
@@ -162,13 +200,19 @@ impl Embree {
         self.folder.join("embree_primary.py")
     }
 
-    /// Embree tracing `rays` against the triangles of `scene`, `runs` times:
-    /// its median time, and each ray's hit distance (+∞ for a miss).
-    fn trace(&self, scene: &Scene, rays: &[Ray], runs: u32) -> Result<(f64, Vec<f32>), String> {
+    /// Embree tracing `rays` against the triangles of `scene`, `runs` times
+    /// on one thread and `runs` times in `processes` processes at once.
+    fn trace(
+        &self,
+        scene: &Scene,
+        rays: &[Ray],
+        runs: u32,
+        processes: u32,
+    ) -> Result<EmbreeTimes, String> {
         let folder = self.folder.join("scene");
         std::fs::create_dir_all(&folder)
             .map_err(|e| format!("cannot create {}: {e}", folder.display()))?;
-        let result = self.trace_in(&folder, scene, rays, runs);
+        let result = self.trace_in(&folder, scene, rays, runs, processes);
         let _ = std::fs::remove_dir_all(&folder);
         result
     }
@@ -179,7 +223,8 @@ impl Embree {
         scene: &Scene,
         rays: &[Ray],
         runs: u32,
-    ) -> Result<(f64, Vec<f32>), String> {
+        processes: u32,
+    ) -> Result<EmbreeTimes, String> {
         let corners = scene.objects.iter().flat_map(|o| match o.shape {
             Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => vertices,
             Shape::Sphere { .. } | Shape::Plane { .. } | Shape::Cone { .. } => {
@@ -198,6 +243,7 @@ impl Embree {
             .arg(self.script())
             .arg(folder)
             .arg(runs.to_string())
+            .arg(processes.to_string())
             .output()
             .map_err(|e| format!("cannot run {}: {e}", self.python))?;
         if !output.status.success() {
@@ -205,18 +251,20 @@ impl Embree {
             return Err(format!("Embree's script failed: {}", err.trim()));
         }
         let report = String::from_utf8_lossy(&output.stdout);
-        let seconds = seconds_of(&report);
-        let cpu = cpu_seconds_of(&report);
-        if cpu
-            .iter()
-            .zip(&seconds)
-            .any(|(cpu, wall)| *cpu > 1.2 * wall)
-        {
-            eprintln!("warning: Embree used more than one core's time while timed");
-        }
-        if seconds.is_empty() {
-            return Err("Embree's script reported no times".into());
-        }
+        let seconds = median_seconds(&report, "seconds ", 1)?;
+        // One process is the one thread: the script runs no more.
+        let parallel = format!("parallel {processes} seconds ");
+        let (parallel_seconds, uneven) = if processes > 1 {
+            let uneven = busy_ratios(&report, &parallel);
+            let uneven = if uneven.is_empty() {
+                1.0
+            } else {
+                median(uneven)
+            };
+            (median_seconds(&report, &parallel, processes)?, uneven)
+        } else {
+            (seconds, 1.0)
+        };
         let t = read_f32(&folder.join("t.f32"))?;
         if t.len() != rays.len() {
             return Err(format!(
@@ -225,8 +273,55 @@ impl Embree {
                 rays.len()
             ));
         }
-        Ok((median(seconds), t))
+        Ok(EmbreeTimes {
+            seconds,
+            parallel_seconds,
+            uneven,
+            t,
+        })
     }
+}
+
+/// The median wall time of the report's lines that start with `prefix`
+/// (`seconds S cpu C`, or `parallel N seconds S cpu C ..`: the wall time
+/// follows the prefix, the CPU time comes two words later). Warns if the
+/// `cores` that were meant to trace used more than their time of CPU: then
+/// more threads than those did the work.
+fn median_seconds(report: &str, prefix: &str, cores: u32) -> Result<f64, String> {
+    let wall = report_field(report, prefix, 0);
+    let cpu = report_field(report, prefix, 2);
+    if wall.is_empty() {
+        return Err(format!(
+            "Embree's script reported no `{}` times",
+            prefix.trim()
+        ));
+    }
+    if cpu
+        .iter()
+        .zip(&wall)
+        .any(|(cpu, wall)| *cpu > 1.2 * f64::from(cores) * wall)
+    {
+        eprintln!("warning: Embree used more than {cores} cores' time while timed");
+    }
+    Ok(median(wall))
+}
+
+/// For each of the report's lines that start with `prefix` and end in
+/// `busy B1 .. BN` (each process's time on its share), the slowest's time
+/// over the fastest's.
+fn busy_ratios(report: &str, prefix: &str) -> Vec<f64> {
+    let ratio = |rest: &str| {
+        let busy = rest.split_whitespace().skip_while(|w| *w != "busy").skip(1);
+        let busy: Vec<f64> = busy.filter_map(|w| w.parse().ok()).collect();
+        let slowest = busy.iter().copied().reduce(f64::max)?;
+        let fastest = busy.iter().copied().reduce(f64::min)?;
+        Some(slowest / fastest)
+    };
+    report
+        .lines()
+        .filter_map(|l| l.strip_prefix(prefix))
+        .filter_map(ratio)
+        .collect()
 }
 
 /// Writes numbers as raw little-endian f32.
@@ -248,21 +343,13 @@ fn read_f32(path: &Path) -> Result<Vec<f32>, String> {
         .collect())
 }
 
-/// The wall times in the script's report: its lines `seconds S cpu C`.
-fn seconds_of(report: &str) -> Vec<f64> {
-    report_field(report, 1)
-}
-
-/// The process's CPU times in the script's report.
-fn cpu_seconds_of(report: &str) -> Vec<f64> {
-    report_field(report, 3)
-}
-
-fn report_field(report: &str, index: usize) -> Vec<f64> {
+/// In the lines of the script's report that start with `prefix`, the
+/// number `index` words after the prefix.
+fn report_field(report: &str, prefix: &str, index: usize) -> Vec<f64> {
     report
         .lines()
-        .filter(|l| l.starts_with("seconds "))
-        .filter_map(|l| l.split_whitespace().nth(index)?.parse().ok())
+        .filter_map(|l| l.strip_prefix(prefix))
+        .filter_map(|rest| rest.split_whitespace().nth(index)?.parse().ok())
         .collect()
 }
 
@@ -361,7 +448,10 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
     bar.finish_and_clear();
     let (size, runs) = (args.size, args.runs);
     let embree_line = match &embree {
-        Ok(e) => format!("Embree 4 through {} ({}), one thread", e.version, e.python),
+        Ok(e) => format!(
+            "Embree 4 through {} ({}), one thread and {threads} processes at once",
+            e.version, e.python
+        ),
         Err(why) => format!("Embree: {why}"),
     };
     let mut out = format!(
@@ -378,6 +468,18 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
                 "\nwarning: {}: raybook and Embree agree on hit or miss for only {:.3} % of the rays",
                 t.name,
                 agreement.hit_or_miss() * 100.0
+            );
+        }
+    }
+    for t in &timings {
+        if let EmbreeResult::Timed { uneven, .. } = t.embree
+            && uneven > UNEVEN
+        {
+            out += &format!(
+                "\nnote: {}: Embree's slowest process took {uneven:.2} times as long as its \
+                 fastest (median of the runs): each traces a contiguous share of the rows, \
+                 and its time on {threads} threads is the slowest's",
+                t.name
             );
         }
     }
@@ -422,10 +524,13 @@ fn time_scene(
         Err(why) => EmbreeResult::Skipped(why.clone()),
         Ok(_) if !triangles_only(scene) => EmbreeResult::Skipped(TRIANGLES_ONLY.into()),
         Ok(embree) => {
-            let (seconds, theirs) = embree.trace(scene, &rays, runs)?;
+            let threads = pool.current_num_threads() as u32;
+            let theirs = embree.trace(scene, &rays, runs, threads)?;
             EmbreeResult::Timed {
-                seconds,
-                agreement: agreement(&t, &theirs),
+                seconds: theirs.seconds,
+                parallel_seconds: theirs.parallel_seconds,
+                uneven: theirs.uneven,
+                agreement: agreement(&t, &theirs.t),
             }
         }
     };
@@ -442,8 +547,17 @@ fn time_scene(
 }
 
 /// The timings as a Markdown table, one row per scene.
+///
+/// Each side has a one-thread column and a per-thread column at `threads`;
+/// the ratios compare one thread with one thread, raybook's threads with
+/// Embree's one thread (the bench's first measure, which charges raybook
+/// alone for threads that slow each other down), and each side's threads
+/// with the other's, run under the same contention.
 fn timings_table(timings: &[PrimaryTiming], threads: u32) -> String {
     let per_thread = format!("raybook Mrays/s per thread, {threads} threads");
+    let embree_per_thread = format!("Embree Mrays/s per thread, {threads} threads");
+    let old_ratio = format!("raybook per thread, {threads} threads / Embree 1 thread");
+    let same_ratio = format!("raybook per thread / Embree per thread, {threads} threads");
     let header = [
         "scene",
         "primitives",
@@ -453,8 +567,10 @@ fn timings_table(timings: &[PrimaryTiming], threads: u32) -> String {
         "raybook Mrays/s, 1 thread",
         &per_thread,
         "Embree Mrays/s, 1 thread",
-        "raybook 1 thread / Embree",
-        "raybook per thread / Embree",
+        &embree_per_thread,
+        "raybook 1 thread / Embree 1 thread",
+        &old_ratio,
+        &same_ratio,
         "hit/miss agree",
         "t agrees (1e-4)",
     ];
@@ -463,23 +579,52 @@ fn timings_table(timings: &[PrimaryTiming], threads: u32) -> String {
 
 impl PrimaryTiming {
     /// The table's cells for this scene; where Embree did not run, its
-    /// first cell says why and the others are dashes.
-    fn cells(&self, threads: u32) -> [String; 12] {
+    /// throughput cells say why and the others are dashes.
+    fn cells(&self, threads: u32) -> [String; 14] {
         let mrays = |seconds: f64| self.rays as f64 / seconds / 1e6;
-        let per_thread = mrays(self.parallel_seconds) / f64::from(threads);
-        let dash = || "–".to_owned();
-        let percent = |f: f64, differ: usize| format!("{:.3} % ({differ} differ)", f * 100.0);
-        let embree = match &self.embree {
-            EmbreeResult::Skipped(why) => [why.clone(), dash(), dash(), dash(), dash()],
-            EmbreeResult::Timed { seconds, agreement } => [
-                format!("{:.2}", mrays(*seconds)),
-                format!("{:.2}", mrays(self.serial_seconds) / mrays(*seconds)),
-                format!("{:.2}", per_thread / mrays(*seconds)),
-                percent(agreement.hit_or_miss(), agreement.hit_or_miss_differs),
-                percent(agreement.t(), agreement.t_differs),
-            ],
+        let threads = f64::from(threads);
+        let per_thread = mrays(self.parallel_seconds) / threads;
+        let [
+            embree,
+            embree_per_thread,
+            serial_ratio,
+            old_ratio,
+            ratio,
+            hits_agree,
+            t_agrees,
+        ] = match &self.embree {
+            EmbreeResult::Skipped(why) => {
+                let dash = || "–".to_owned();
+                [
+                    why.clone(),
+                    why.clone(),
+                    dash(),
+                    dash(),
+                    dash(),
+                    dash(),
+                    dash(),
+                ]
+            }
+            EmbreeResult::Timed {
+                seconds,
+                parallel_seconds,
+                agreement,
+                ..
+            } => {
+                let (one, each) = (mrays(*seconds), mrays(*parallel_seconds) / threads);
+                let percent =
+                    |f: f64, differ: usize| format!("{:.3} % ({differ} differ)", f * 100.0);
+                [
+                    format!("{one:.2}"),
+                    format!("{each:.2}"),
+                    format!("{:.2}", mrays(self.serial_seconds) / one),
+                    format!("{:.2}", per_thread / one),
+                    format!("{:.2}", per_thread / each),
+                    percent(agreement.hit_or_miss(), agreement.hit_or_miss_differs),
+                    percent(agreement.t(), agreement.t_differs),
+                ]
+            }
         };
-        let [embree, serial_ratio, ratio, hits_agree, t_agrees] = embree;
         [
             self.name.clone(),
             self.primitives.to_string(),
@@ -489,7 +634,9 @@ impl PrimaryTiming {
             format!("{:.2}", mrays(self.serial_seconds)),
             format!("{per_thread:.2}"),
             embree,
+            embree_per_thread,
             serial_ratio,
+            old_ratio,
             ratio,
             hits_agree,
             t_agrees,
@@ -499,14 +646,26 @@ impl PrimaryTiming {
 
 #[cfg(test)]
 mod tests {
-    use super::{agreement, cpu_seconds_of, seconds_of};
+    use super::{agreement, busy_ratios, median_seconds, report_field};
 
     #[test]
     fn the_times_are_read_from_the_scripts_report() {
-        let report = "seconds 0.5 cpu 0.25\nnoise\nseconds 1.25 cpu 1.5\n";
-        assert_eq!(seconds_of(report), [0.5, 1.25]);
-        assert_eq!(cpu_seconds_of(report), [0.25, 1.5]);
-        assert!(seconds_of("nothing").is_empty());
+        let report = "seconds 0.5 cpu 0.25\nnoise\nseconds 1.25 cpu 1.5\n\
+                      parallel 2 seconds 0.75 cpu 1.5 busy 0.7 0.75\n\
+                      parallel 3 seconds 9 cpu 9\n";
+        assert_eq!(report_field(report, "seconds ", 0), [0.5, 1.25]);
+        assert_eq!(report_field(report, "seconds ", 2), [0.25, 1.5]);
+        let two = "parallel 2 seconds ";
+        assert_eq!(report_field(report, two, 0), [0.75], "not 3 processes'");
+        assert_eq!(report_field(report, two, 2), [1.5]);
+        assert_eq!(median_seconds(report, "seconds ", 1), Ok(0.875));
+        assert!(median_seconds("nothing", "seconds ", 1).is_err());
+        assert!(median_seconds(report, "parallel 4 seconds ", 4).is_err());
+        assert_eq!(busy_ratios(report, two), [0.75 / 0.7]);
+        assert!(
+            busy_ratios(report, "parallel 3 seconds ").is_empty(),
+            "no busy times"
+        );
     }
 
     #[test]
