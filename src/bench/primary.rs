@@ -19,10 +19,12 @@
 //! `--threads` threads is then fairly compared only with Embree's per
 //! process on as many processes, both under the same contention; the table
 //! keeps the comparison with Embree's one thread beside it. Each process
-//! traces a contiguous share of the rays, which may cost unlike amounts,
-//! where raybook's threads share out the work as they go: the report notes
-//! where Embree's slowest process took more than 1.1 times its fastest's
-//! time, since that lowers Embree's throughput on the threads.
+//! traces blocks of 256 rays dealt out in turn, so that the shares cost
+//! alike (contiguous shares, the busier rows in one, took up to 1.4 times
+//! as long as the other), as raybook's threads share out the work as they
+//! go: the report notes where Embree's slowest process still took more
+//! than 1.1 times its fastest's time, since that lowers Embree's
+//! throughput on the threads.
 
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -142,10 +144,9 @@ struct EmbreeTimes {
     /// the last one's end.
     parallel_seconds: f64,
     /// The median over the runs of how many times as long as the fastest
-    /// process the slowest took on its share (1 for one process). Each
-    /// process traces a contiguous share of the rays, rows of the image,
-    /// and rows cost unlike amounts: the slowest sets the time, while
-    /// raybook's threads share out the work as they go (rayon).
+    /// process the slowest took on its share (1 for one process). The
+    /// slowest sets the time, while raybook's threads share out the work as
+    /// they go (rayon).
     uneven: f64,
     /// Each ray's hit distance, +∞ for a miss (from the one thread).
     t: Vec<f32>,
@@ -477,8 +478,8 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
         {
             out += &format!(
                 "\nnote: {}: Embree's slowest process took {uneven:.2} times as long as its \
-                 fastest (median of the runs): each traces a contiguous share of the rows, \
-                 and its time on {threads} threads is the slowest's",
+                 fastest (median of the runs), and its time on {threads} threads is the \
+                 slowest's",
                 t.name
             );
         }
