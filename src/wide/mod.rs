@@ -73,6 +73,7 @@ impl<'a> WideBvh<'a> {
         if !binary.is_empty() {
             let mut tree = Collapse {
                 spans: spans(&binary),
+                lanes_before: lanes_before(&primitives),
                 binary: &binary,
                 primitives: &primitives,
                 nodes: &mut nodes,
@@ -126,6 +127,10 @@ struct Collapse<'t> {
     binary: &'t [build::Node],
     /// Each binary node's primitives: (first, count).
     spans: Vec<(u32, u32)>,
+    /// For each i, the packet lanes that primitives[..i] fill on their own:
+    /// one for a sphere or a triangle, four for a cone (a packet of its
+    /// own).
+    lanes_before: Vec<u32>,
     /// In the order of the binary tree's leaves.
     primitives: &'t [Primitive],
     nodes: &'t mut Vec<Node4>,
@@ -173,9 +178,11 @@ impl Collapse<'_> {
     }
 
     /// Is binary node `n` a leaf here: a leaf of chapter 8's tree, or a
-    /// subtree of at most [`LEAF_MAX`] primitives?
+    /// subtree whose primitives fill at most [`LEAF_MAX`] lanes?
     fn is_leaf(&self, n: usize) -> bool {
-        self.binary[n].count > 0 || self.spans[n].1 <= LEAF_MAX
+        let (first, count) = self.spans[n];
+        let (first, end) = (first as usize, (first + count) as usize);
+        self.binary[n].count > 0 || self.lanes_before[end] - self.lanes_before[first] <= LEAF_MAX
     }
 
     /// The packets of the binary leaf of `count` primitives from `start`.
@@ -190,8 +197,10 @@ impl Collapse<'_> {
     }
 }
 
-/// A subtree of chapter 8's tree with at most this many primitives becomes
-/// one leaf (two packets at most, if of one kind). Chapter 8's tree splits
+/// A subtree of chapter 8's tree whose primitives fill at most this many
+/// packet lanes becomes one leaf: two packets at most, if of one kind (a
+/// cone, tested alone, takes a packet's four lanes: leaves of eight cones
+/// made rings-7 1.2 times slower). Chapter 8's tree splits
 /// down to one or two primitives a leaf, since it tests them one at a
 /// time: here that left packets 1.0 (balls-4) to 1.8 (gears-4) primitives
 /// full. Primary rays a second, 1 thread, 4 / 8 against no merging:
@@ -216,6 +225,20 @@ fn spans(binary: &[build::Node]) -> Vec<(u32, u32)> {
         };
     }
     spans
+}
+
+/// The prefix sums of the lanes each primitive fills: 1, or 4 for a cone.
+fn lanes_before(primitives: &[Primitive]) -> Vec<u32> {
+    let lanes = |p: &Primitive| match p.geometry {
+        primitive::Geometry::Cone { .. } => 4,
+        _ => 1,
+    };
+    std::iter::once(0)
+        .chain(primitives.iter().scan(0, |sum, p| {
+            *sum += lanes(p);
+            Some(*sum)
+        }))
+        .collect()
 }
 
 fn area(binary: &[build::Node], n: usize) -> f32 {
