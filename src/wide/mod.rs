@@ -3,7 +3,8 @@
 //! Chapter 8 builds a binary tree and tests one box per step. This module
 //! takes that same tree (the same binned-SAH build) and collapses it, two
 //! levels into one, to nodes of four children; a step then tests four boxes
-//! in one slab test of four lanes (`node.rs`). Beside that:
+//! in one slab test of four lanes (`node.rs`); subtrees of up to eight
+//! primitives become one leaf, so that its packets are full. Beside that:
 //! - a leaf's primitives are stored in packets of four spheres or four
 //!   triangles, lane by lane, and tested four at a time (`packet.rs`): only
 //!   their geometry, not chapter 8's copy of the whole `Shape`. The scene's
@@ -13,9 +14,10 @@
 //! - the per-ray parts of the slab and triangle tests are worked out once
 //!   per ray, not once per box or triangle (`primitive.rs`);
 //! - spheres are first tested in f32, which rules out most rays that miss
-//!   them, before chapter 2's test in f64;
+//!   them, and a sphere behind the ray's origin is known to have no root
+//!   ahead, before chapter 2's divisions and square root in f64;
 //! - the traversal stack is not filled before use (`traverse.rs`);
-//! - a scene of a few objects gets no tree: they are tested in turn.
+//! - a scene of a few objects gets no tree: its packets are tested in turn.
 //!
 //! The tests are chapter 2's, to the last bit, and the closest hit is
 //! chosen as chapter 2 chooses it, so the pictures equal brute force's.
