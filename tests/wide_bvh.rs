@@ -67,6 +67,94 @@ fn an_empty_scene_and_a_single_object_are_handled() {
     assert!(!wide.any_hit(&ray, 0.0, 3.9));
 }
 
+/// A 6×6 grid of unit squares in the plane z = 0, two triangles each: 72
+/// triangles, so a tree whose leaves hold packets of several. Rays aimed
+/// straight down at every shared corner, at the middle of every shared
+/// edge and along the diagonals, where the watertight test decides on an
+/// edge (a packet lane finished in f64): every one hits, exactly as brute
+/// force says, and nothing falls through a crack.
+#[test]
+fn rays_at_the_shared_edges_and_corners_of_packed_triangles_hit_as_brute_force_does() {
+    let mut objects = Vec::new();
+    for (i, j) in (0..6).flat_map(|i| (0..6).map(move |j| (i as f32, j as f32))) {
+        let [a, b, c, d] = [(i, j), (i + 1.0, j), (i + 1.0, j + 1.0), (i, j + 1.0)]
+            .map(|(x, y)| Vec3::new(x, y, 0.0));
+        for vertices in [[a, b, c], [a, c, d]] {
+            objects.push(Object {
+                shape: Shape::Triangle { vertices },
+                material: 0,
+                shadows: true,
+            });
+        }
+    }
+    let wide = WideBvh::build(&objects);
+    assert!(wide.node_count() > 1, "a tree, not one leaf");
+    let mut rays = 0;
+    for step in 1..12 {
+        for other in 1..12 {
+            let (x, y) = (step as f32 / 2.0, other as f32 / 2.0);
+            for direction in [Vec3::NEG_Z, Vec3::new(0.25, 0.5, -1.0)] {
+                let ray = Ray::new(Vec3::new(x, y, 0.0) - 2.0 * direction, direction);
+                let hit = wide.closest_hit(&ray, 0.0, f32::INFINITY);
+                assert!(hit.is_some(), "a ray through ({x}, {y}) fell through");
+                assert_eq!(hit, objects[..].closest_hit(&ray, 0.0, f32::INFINITY));
+                assert!(wide.any_hit(&ray, 0.0, f32::INFINITY));
+                rays += 1;
+            }
+        }
+    }
+    assert_eq!(rays, 2 * 11 * 11);
+}
+
+/// Rays that leave a sphere's surface (as shadow and mirror rays do, just
+/// off it, outwards or inwards) and rays from inside it: the wide BVH's
+/// shortcut for a sphere behind the origin (chapter 2's b > 0, c ≥ 0)
+/// answers as chapter 2's test does, and is not taken for t_min < 0.
+#[test]
+fn rays_leaving_a_sphere_get_chapter_2s_answers() {
+    let objects: Vec<Object> = (0..12)
+        .map(|k| Object {
+            shape: Shape::Sphere {
+                center: Vec3::new(3.0 * (k % 4) as f32, 3.0 * (k / 4) as f32, 0.5 * k as f32),
+                radius: 0.5 + 0.1 * k as f32,
+            },
+            material: 0,
+            shadows: true,
+        })
+        .collect();
+    let wide = WideBvh::build(&objects);
+    let mut checked = 0;
+    for object in &objects {
+        let Shape::Sphere { center, radius } = object.shape else {
+            unreachable!()
+        };
+        for k in 0..40 {
+            let angle = k as f32 * 0.7;
+            let normal = Vec3::new(angle.cos(), angle.sin(), (0.3 * angle).sin()).normalize();
+            for offset in [-1e-3, -1e-6, 0.0, 1e-6, 1e-3, -0.5] {
+                let origin = center + (radius + offset) * normal;
+                for direction in [normal, -normal, normal + Vec3::Y, Vec3::Z - normal] {
+                    let ray = Ray::new(origin, direction);
+                    for (t_min, t_max) in [(0.0, f32::INFINITY), (0.0, 2.0), (-1.0, 1.0)] {
+                        assert_eq!(
+                            wide.closest_hit(&ray, t_min, t_max),
+                            objects[..].closest_hit(&ray, t_min, t_max),
+                            "{ray:?} in ({t_min}, {t_max})"
+                        );
+                        assert_eq!(
+                            wide.any_hit(&ray, t_min, t_max),
+                            objects[..].any_hit(&ray, t_min, t_max),
+                            "{ray:?} in ({t_min}, {t_max})"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 12 * 40 * 6 * 4 * 3);
+}
+
 fn point() -> impl Strategy<Value = Vec3> {
     prop::array::uniform3(-4.0f32..4.0).prop_map(Vec3::from)
 }
