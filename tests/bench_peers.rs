@@ -3,10 +3,14 @@
 
 use std::process::{Command, Output};
 
+/// The bench keeps its pictures in the system's temporary folder for the
+/// user to look at; the tests' go to cargo's folder for tests' files, in
+/// target/, not into /tmp.
 fn bench(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_raybook"))
         .args(["bench", "--quiet", "--no-povray", "--runs", "1"])
         .args(args)
+        .env("TMPDIR", env!("CARGO_TARGET_TMPDIR"))
         .output()
         .unwrap()
 }
