@@ -503,3 +503,40 @@ fn a_cone_beyond_f32_is_refused_not_drawn_with_nan() {
     let e = broken(&with_line(13, "c 0 0 0 1 0 0 1e-44 2"));
     assert!(e.message.contains("too short for its radii"), "{e}");
 }
+
+/// An NFF scene that would need more memory than the machine has is
+/// refused with a clear message before it is converted, as a TOML scene
+/// is; the same scene within a sufficient limit loads.
+#[test]
+fn an_nff_scene_too_large_for_the_memory_is_refused_before_it_is_converted() {
+    // Broken after GOOD (a sphere of three numbers): converting it would
+    // fail on the next line, so a refusal without a line came first.
+    let text = format!("{GOOD}{}", "s 1 2 3\n".repeat(1000));
+    let lines = text.lines().count();
+    let limit = raybook::toolkit::scene::MemoryLimit {
+        bytes: 200_000,
+        source: "a test's limit".into(),
+    };
+    let e = nff::parse_within(&text, "big.nff", Some(&limit)).unwrap_err();
+    assert_eq!((e.file.as_str(), e.line), ("big.nff", None), "{e}");
+    for words in [
+        &format!("up to {lines} objects (one a line)"),
+        "a test's limit",
+        "195.3 KiB is available",
+        "render a smaller scene",
+    ] {
+        assert!(e.message.contains(words), "{words:?} not in {e}");
+    }
+    let within = raybook::toolkit::scene::MemoryLimit {
+        bytes: 10_000_000,
+        source: "a test's limit".into(),
+    };
+    let e = nff::parse_within(&text, "big.nff", Some(&within)).unwrap_err();
+    let first_broken = GOOD.lines().count() as u32 + 1;
+    assert_eq!(
+        e.line,
+        Some(first_broken),
+        "converted: the broken sphere is found: {e}"
+    );
+    assert!(nff::parse_within(GOOD, "good.nff", Some(&limit)).is_ok());
+}

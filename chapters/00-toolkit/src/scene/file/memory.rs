@@ -11,15 +11,16 @@
 //! | its records in a batch (toml's spanned values); 256 objects a batch, one batch per thread | about 3,000 | while its batch is parsed |
 //! | its [`Object`](crate::scene::Object): a `Shape` (76 bytes: the largest, a smooth triangle, has 6 vectors), material index, flag | 96 | always |
 //! | the same, in its batch's list, for the 32 batches parsed at once | 96 | while its group is parsed |
-//! | chapter 8's BVH: a `Primitive` (the `Shape` again, index, flag) | 96 | while rendering |
-//! | chapter 8's BVH: nodes of 32 bytes, about 2 per primitive (reserved, touched as built) | up to 64 | while rendering |
-//! | chapter 8's BVH build: an `Item` (box, centre, index) | 48 | while building |
+//! | the complete tracer's BVH: packets of 192 bytes, about 3.2 spheres each | 60 | while rendering |
+//! | the complete tracer's BVH: four-wide nodes of 128 bytes, about 0.09 a sphere | 12 | while rendering |
+//! | its build: chapter 8's `Item` (box, centre, index) and binary nodes (32 bytes, about 2 per primitive), a `Primitive` (geometry, index, flag), the collapse's spans | 48 + 64 + 48 + 20 | while building |
 //!
 //! So loading peaks near text + 96 bytes per object, and building the BVH
-//! near 96 + 48 + 96 + 64 once the text is gone. Measured peak RSS of
-//! `raybook render` (whole process) on scenes from `cargo run --release -p
-//! ch00-toolkit --example sphere_cloud`: 77 MiB for 250,000 spheres, 282 MiB
-//! for 1 million, 557 MiB for 2 million: about 288 bytes more per sphere,
+//! near 96 + 200 once the text is gone. Measured peak RSS of `raybook
+//! render` (whole process) on scenes from `cargo run --release -p
+//! ch00-toolkit --example sphere_cloud`: 563 MiB for 2 million spheres,
+//! about 295 bytes per sphere (with chapter 8's BVH: 77 MiB for 250,000,
+//! 282 MiB for 1 million, 557 MiB for 2 million),
 //! its 106 bytes of text included. The estimate below adds a margin.
 
 use super::outline::Outline;
@@ -80,7 +81,34 @@ pub(super) fn check(
     outline: &Outline,
     limit: Option<&MemoryLimit>,
 ) -> Result<(), SceneError> {
-    let need = estimate(text, outline);
+    let objects = format!("{} objects", outline.objects);
+    refuse_beyond(file, text, &objects, estimate(text, outline), limit)
+}
+
+/// Refuses an NFF scene that would need more than `limit`: its text plus
+/// [`BYTES_PER_OBJECT`] a line. Every object takes a line at least (a
+/// sphere one, a polygon of n corners n + 1 lines for n − 2 triangles), so
+/// the lines bound the objects from above.
+pub(crate) fn check_nff(
+    file: &str,
+    text: &str,
+    limit: Option<&MemoryLimit>,
+) -> Result<(), SceneError> {
+    let lines = text.lines().count();
+    let need = text.len() as u64 + lines as u64 * BYTES_PER_OBJECT;
+    let objects = format!("up to {lines} objects (one a line)");
+    refuse_beyond(file, text, &objects, need, limit)
+}
+
+/// The error for a scene of `objects` (how many, in words) in `text` that
+/// would need `need` bytes, if that is more than `limit`.
+fn refuse_beyond(
+    file: &str,
+    text: &str,
+    objects: &str,
+    need: u64,
+    limit: Option<&MemoryLimit>,
+) -> Result<(), SceneError> {
     match limit {
         Some(limit) if need > limit.bytes => Err(SceneError::at(
             file,
@@ -88,10 +116,9 @@ pub(super) fn check(
             None,
             "",
             format!(
-                "the scene has {} objects in {} of text and would need about {} of memory \
+                "the scene has {objects} in {} of text and would need about {} of memory \
                  to load and render (about {BYTES_PER_OBJECT} bytes per object, and the text), \
                  but only {} is available ({}); render a smaller scene, or free memory",
-                outline.objects,
                 size(text.len() as u64),
                 size(need),
                 size(limit.bytes),

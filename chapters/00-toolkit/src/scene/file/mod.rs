@@ -29,8 +29,8 @@ mod values;
 
 use serde::Deserialize;
 
-pub(super) use memory::check_file_size;
 pub use memory::{BYTES_PER_OBJECT, MemoryLimit};
+pub(super) use memory::{check_file_size, check_nff};
 pub use sphere_cloud::write_sphere_cloud;
 
 use super::{Scene, SceneError};

@@ -33,6 +33,7 @@ use std::path::Path;
 
 use glam::Vec3;
 
+use super::MemoryLimit;
 use super::rules::{self, has_area};
 use super::{
     CameraSpec, Falloff, ImageSpec, Light, Material, MaterialId, Object, Scene, SceneError, Shape,
@@ -51,16 +52,42 @@ pub fn is_nff(path: &Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("nff"))
 }
 
-/// Reads and converts an NFF file.
+/// Reads and converts an NFF file. As with a TOML scene, a file larger than
+/// the memory the machine has is refused before it is read, and one whose
+/// scene would need more before it is converted (see [`parse_within`]).
 pub fn load(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
-    let path = path.as_ref();
-    let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| SceneError::io(&name, &e))?;
-    parse(&text, &name)
+    load_within(path, MemoryLimit::of_machine().as_ref())
 }
 
-/// Parses NFF text; `file` names it in error messages.
+/// [`load`] within `limit`; `None` checks nothing.
+pub fn load_within(
+    path: impl AsRef<Path>,
+    limit: Option<&MemoryLimit>,
+) -> Result<Scene, SceneError> {
+    let path = path.as_ref();
+    let name = path.display().to_string();
+    let io = |e| SceneError::io(&name, &e);
+    let bytes = std::fs::metadata(path).map_err(io)?.len();
+    super::file::check_file_size(&name, bytes, limit)?;
+    let text = std::fs::read_to_string(path).map_err(io)?;
+    parse_within(&text, &name, limit)
+}
+
+/// Parses NFF text; `file` names it in error messages. A scene that would
+/// need more memory than the machine has is refused first.
 pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
+    parse_within(text, file, MemoryLimit::of_machine().as_ref())
+}
+
+/// [`parse`], refusing a scene that would need more than `limit`: its text
+/// and [`BYTES_PER_OBJECT`](super::BYTES_PER_OBJECT) for each line (an
+/// object takes one line at least); `None` checks nothing.
+pub fn parse_within(
+    text: &str,
+    file: &str,
+    limit: Option<&MemoryLimit>,
+) -> Result<Scene, SceneError> {
+    super::file::check_nff(file, text, limit)?;
     let mut reader = Reader::new(text, file);
     let mut nff = Nff::default();
     while let Some(line) = reader.next_line() {
