@@ -7,8 +7,8 @@
 //! none ([`Direct`]), and the choice between the two ([`render_complete`]).
 
 pub use ch02_hits::{
-    hit_at, hit_with_weights, intersect, intersect_cone, intersect_plane, intersect_sphere,
-    intersect_triangle, sphere_point, sphere_roots, triangle_normal,
+    Quadratic, hit_at, hit_with_weights, intersect, intersect_cone, intersect_plane,
+    intersect_sphere, intersect_triangle, sphere_point, sphere_roots, triangle_normal,
 };
 pub use ch07_termination::*;
 

@@ -18,7 +18,7 @@ use glam::{BVec4A, Vec4};
 use super::primitive::{Geometry, PreparedRay, Primitive, Weights};
 use super::traverse::Closest;
 use crate::toolkit::Vec3;
-use crate::tracer::{Ray, intersect_cone, intersect_sphere};
+use crate::tracer::{Quadratic, Ray, intersect_cone, intersect_sphere};
 
 /// Up to four primitives of one kind, and which scene objects they are.
 #[derive(Debug, Clone, Copy)]
@@ -272,8 +272,7 @@ impl Spheres {
 /// the centre) and c ≥ 0 (the origin is not inside), its
 /// q = −(b + √Δ)/2 is negative, so both of its roots, c/q and q/a, are
 /// ≤ 0 (rounding keeps their signs): neither lies beyond t_min. b and c
-/// are computed here exactly as chapter 2 computes them, so the answer is
-/// its answer. It is the common case of a shadow ray or a mirror ray
+/// are chapter 2's own ([`Quadratic::of`]), so the answer is its answer. It is the common case of a shadow ray or a mirror ray
 /// leaving a sphere, which always meets its own sphere's line.
 #[inline(always)]
 fn intersect_sphere_ahead(
@@ -283,10 +282,7 @@ fn intersect_sphere_ahead(
     t_min: f32,
     t_max: f32,
 ) -> Option<f32> {
-    let f = ray.origin.as_dvec3() - center.as_dvec3();
-    let rd = ray.direction.as_dvec3();
-    let rho = radius as f64;
-    let (b, c) = (2.0 * f.dot(rd), f.dot(f) - rho * rho);
+    let Quadratic { b, c, .. } = Quadratic::of(center, radius, ray);
     if t_min >= 0.0 && b > 0.0 && c >= 0.0 {
         return None;
     }

@@ -10,7 +10,7 @@ pub mod ray_tree;
 pub use ch01_rays::{Camera, Ray, render, toolkit};
 pub use cone::{cone_point, intersect_cone};
 pub use plane::{intersect_plane, plane_point};
-pub use sphere::{intersect_sphere, sphere_point, sphere_roots, sphere_roots_abc};
+pub use sphere::{Quadratic, intersect_sphere, sphere_point, sphere_roots, sphere_roots_abc};
 pub use triangle::{
     barycentrics, intersect_triangle, smooth_normal, triangle_by_plane, triangle_normal,
     triangle_point,

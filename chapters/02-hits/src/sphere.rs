@@ -5,7 +5,7 @@
 //! r(t) = r0 + t·rd; a, b, c are the quadratic's coefficients and nothing else.
 
 use crate::Ray;
-use crate::toolkit::Vec3;
+use crate::toolkit::{DVec3, Vec3};
 
 /// Both distances at which the ray's line meets the sphere, nearest first,
 /// or `None` if it passes by: the lecture's formula, in f32.
@@ -63,10 +63,14 @@ pub fn sphere_roots_abc(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f3
 /// every f32 input and every product of two of them is exact, f nearly so,
 /// and the stable formula keeps that precision to the end.
 pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> {
-    let f = ray.origin.as_dvec3() - center.as_dvec3();
-    let rd = ray.direction.as_dvec3();
-    let rho = radius as f64;
-    let (a, b, c) = (rd.dot(rd), 2.0 * f.dot(rd), f.dot(f) - rho * rho);
+    let Quadratic {
+        f,
+        rd,
+        rho,
+        a,
+        b,
+        c,
+    } = Quadratic::of(center, radius, ray);
     let h = f - (b / (2.0 * a)) * rd;
     let discriminant = 4.0 * a * (rho * rho - h.dot(h));
     if discriminant < 0.0 {
@@ -92,6 +96,36 @@ pub fn intersect_sphere(
     crate::toolkit::exercise::solution_begins("ch02-nearest");
     [near, far].into_iter().find(|&t| t > t_min && t < t_max)
     // END EXERCISE
+}
+
+/// The quadratic a·t² + b·t + c = 0 of a ray's line and a sphere, in f64,
+/// as [`sphere_roots`] solves it: f = r0 − m, rd and ρ, and a = rd·rd,
+/// b = 2 f·rd, c = f·f − ρ².
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Quadratic {
+    pub f: DVec3,
+    pub rd: DVec3,
+    pub rho: f64,
+    pub a: f64,
+    pub b: f64,
+    pub c: f64,
+}
+
+impl Quadratic {
+    pub fn of(center: Vec3, radius: f32, ray: &Ray) -> Quadratic {
+        let f = ray.origin.as_dvec3() - center.as_dvec3();
+        let rd = ray.direction.as_dvec3();
+        let rho = radius as f64;
+        let (a, b, c) = (rd.dot(rd), 2.0 * f.dot(rd), f.dot(f) - rho * rho);
+        Quadratic {
+            f,
+            rd,
+            rho,
+            a,
+            b,
+            c,
+        }
+    }
 }
 
 /// The point of the sphere hit at distance t, put back onto the surface.
