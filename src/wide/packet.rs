@@ -272,8 +272,9 @@ impl Spheres {
 /// the centre) and c ≥ 0 (the origin is not inside), its
 /// q = −(b + √Δ)/2 is negative, so both of its roots, c/q and q/a, are
 /// ≤ 0 (rounding keeps their signs): neither lies beyond t_min. b and c
-/// are chapter 2's own ([`Quadratic::of`]), so the answer is its answer. It is the common case of a shadow ray or a mirror ray
-/// leaving a sphere, which always meets its own sphere's line.
+/// are chapter 2's own ([`Quadratic::of`]), so the answer is its answer.
+/// It is the common case of a shadow ray or a mirror ray leaving a
+/// sphere, which always meets its own sphere's line.
 #[inline(always)]
 fn intersect_sphere_ahead(
     center: Vec3,
