@@ -142,7 +142,7 @@ fn write_results(
     Ok((csv_path, svg_path))
 }
 
-/// [`plot`] to a temporary file, renamed into place when complete.
+/// [`plot()`] to a temporary file, renamed into place when complete.
 fn plot_atomically(measurements: &[Measurement], path: &Path) -> Result<(), String> {
     let temporary = path.with_extension("svg.partial");
     plot(measurements, &temporary).map_err(|e| e.to_string())?;

@@ -8,8 +8,10 @@
 //!   t and the barycentric weights; a lane on an edge in f32 (an edge
 //!   function exactly 0) is finished alone, in f64, as chapter 2 does;
 //! - four spheres go through the f32 test that rules out rays that pass
-//!   too far from the centre ([`might_hit`](Spheres::might_hit)); the few
-//!   lanes left go one by one through chapter 2's f64 test.
+//!   too far from the centre ([`might_hit`](Spheres::might_hit)); of the
+//!   few lanes left, a sphere behind the ray's origin has no root ahead
+//!   ([`intersect_sphere_ahead`]), and the others go one by one through
+//!   chapter 2's f64 test.
 //!
 //! Cones are rare (the SPD's rings and tree) and stay one to a packet.
 
@@ -23,7 +25,7 @@ use crate::tracer::{Quadratic, Ray, intersect_cone, intersect_sphere};
 /// Up to four primitives of one kind, and which scene objects they are.
 #[derive(Debug, Clone, Copy)]
 pub struct Packet {
-    pub shapes: Shapes,
+    shapes: Shapes,
     /// Each lane's index in the scene's objects.
     object: [u32; 4],
     /// Bit i: lane i holds a primitive.
@@ -38,7 +40,7 @@ const _: () = assert!(std::mem::size_of::<Packet>() == 192);
 
 /// A packet's geometry, lane by lane.
 #[derive(Debug, Clone, Copy)]
-pub enum Shapes {
+enum Shapes {
     Spheres(Spheres),
     Triangles(Triangles),
     Cone(Cone),
@@ -46,7 +48,7 @@ pub enum Shapes {
 
 /// One cone: its ends and their radii.
 #[derive(Debug, Clone, Copy)]
-pub struct Cone {
+struct Cone {
     base: Vec3,
     base_radius: f32,
     apex: Vec3,
@@ -55,14 +57,14 @@ pub struct Cone {
 
 /// Four spheres: centres' x, y, z and radii.
 #[derive(Debug, Clone, Copy)]
-pub struct Spheres {
+struct Spheres {
     center: [Vec4; 3],
     radius: Vec4,
 }
 
 /// Four triangles: each corner's x, y, z.
 #[derive(Debug, Clone, Copy)]
-pub struct Triangles {
+struct Triangles {
     corners: [[Vec4; 3]; 3],
 }
 
@@ -189,6 +191,7 @@ impl Packet {
 }
 
 impl Cone {
+    /// Chapter 2's `intersect_cone`.
     #[inline(always)]
     fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<f32> {
         let Cone {
@@ -292,7 +295,7 @@ fn intersect_sphere_ahead(
 
 /// What the four-lane triangle test found.
 struct Found {
-    /// Bit i: lane i's triangle is met in (t_min, t_max) at t[i].
+    /// Bit i: lane i's triangle is met in (t_min, t_max), at lane i of `t`.
     hit: u32,
     /// Bit i: lane i is on an edge in f32, to be decided in f64.
     on_edge: u32,
@@ -332,7 +335,7 @@ impl Triangles {
             .map(|c| Vec3::from_array(c.map(|axis| axis.to_array()[lane])))
     }
 
-    /// Chapter 2's watertight test ([`Shear::intersect`]) in four lanes:
+    /// Chapter 2's watertight test ([`Shear::intersect`](super::primitive::Shear::intersect)) in four lanes:
     /// each corner projected into the ray's space by the same products
     /// and sums, the same edge functions, determinant and t.
     #[inline(always)]

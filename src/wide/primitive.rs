@@ -118,7 +118,7 @@ pub struct Shear {
     /// The axes kx, ky, kz: z the one along which the ray travels fastest,
     /// x and y the others, in the order that keeps a triangle's winding.
     axes: [usize; 3],
-    /// sx = rd[kx]/rd[kz], sy = rd[ky]/rd[kz], sz = 1/rd[kz].
+    /// sx = rd\[kx\] / rd\[kz\], sy = rd\[ky\] / rd\[kz\], sz = 1 / rd\[kz\].
     scale: [f32; 3],
 }
 
@@ -137,8 +137,11 @@ impl Shear {
     }
 
     /// A corner in the ray's space, as chapter 2 computes it with p the
-    /// corner less r0: x = p[kx] − sx·p[kz], y = p[ky] − sy·p[kz],
-    /// z = sz·p[kz].
+    /// corner less r0:
+    ///
+    /// ```text
+    /// x = p[kx] − sx·p[kz],  y = p[ky] − sy·p[kz],  z = sz·p[kz]
+    /// ```
     #[inline]
     fn project(&self, origin: Vec3, corner: Vec3) -> (f32, f32, f32) {
         let p = (corner - origin).to_array();
