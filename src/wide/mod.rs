@@ -200,14 +200,15 @@ impl Collapse<'_> {
 }
 
 /// A subtree of chapter 8's tree whose primitives fill at most this many
-/// packet lanes becomes one leaf: two packets at most, if of one kind (a
-/// cone, tested alone, takes a packet's four lanes: leaves of eight cones
-/// made rings-7 1.2 times slower). Chapter 8's tree splits
-/// down to one or two primitives a leaf, since it tests them one at a
-/// time: here that left packets 1.0 (balls-4) to 1.8 (gears-4) primitives
-/// full. Primary rays a second, 1 thread, 4 / 8 against no merging:
-/// gears-4 1.06 / 1.13, teapot-6 1.07 / 1.06; balls-4 and tetra-6 within
-/// noise.
+/// packet lanes becomes one leaf: two packets at most, if of one kind. A
+/// cone takes a packet's four lanes, since it is tested alone (leaves of
+/// eight cones made rings-7 1.2 times slower).
+///
+/// Chapter 8's tree splits down to one or two primitives a leaf, since it
+/// tests them one at a time: that left packets 1.0 (balls-4) to 1.8
+/// (gears-4) primitives full. Merging subtrees of up to 4 or 8 gave primary
+/// rays a second, one thread, against none: gears-4 1.06 and 1.13 times,
+/// teapot-6 1.07 and 1.06; balls-4 and tetra-6 the same within the noise.
 const LEAF_MAX: u32 = 8;
 
 /// The primitives under each node of chapter 8's tree, (first, count): a
@@ -220,8 +221,13 @@ fn spans(binary: &[build::Node]) -> Vec<(u32, u32)> {
             build::Node {
                 count: 0, start, ..
             } => {
-                let (first, left) = spans[n + 1];
-                (first, left + spans[start as usize].1)
+                let ((first, left), (second, right)) = (spans[n + 1], spans[start as usize]);
+                debug_assert_eq!(
+                    first + left,
+                    second,
+                    "a subtree's primitives are contiguous"
+                );
+                (first, left + right)
             }
             build::Node { start, count, .. } => (start, count),
         };
