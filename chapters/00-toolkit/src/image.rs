@@ -28,9 +28,11 @@ impl Image {
         pixel: impl Fn(u32, u32, &mut Stats) -> Color + Sync,
         on_row: impl Fn() + Sync,
     ) -> (Image, Stats) {
-        // Zeros as plain arrays of f32 come from the system already zeroed,
-        // untouched: each page is first touched by the thread that renders
-        // into it, not one by one on this thread beforehand.
+        // A vec! of plain zeros (f32s, not glam's Color) is memory the
+        // system hands out already zeroed and untouched: each page is then
+        // first touched by the thread that renders into it, not cleared
+        // one by one on this thread beforehand. (The conversion to Color at
+        // the end runs in place: the two have the same layout.)
         let mut pixels = vec![[0.0f32; 3]; width as usize * height as usize];
         let stats = pixels
             .par_chunks_mut(width as usize)
