@@ -6,7 +6,8 @@
 //! each lane, so each lane's answer is the scalar test's to the last bit:
 //! - four triangles go through chapter 2's watertight test together, up to
 //!   t and the barycentric weights; a lane on an edge in f32 (an edge
-//!   function exactly 0) is finished alone, in f64, as chapter 2 does;
+//!   function exactly 0, which chapter 2 decides again in f64) goes alone
+//!   through chapter 2's `intersect_triangle` itself;
 //! - four spheres go through the f32 test that rules out rays that pass
 //!   too far from the centre ([`might_hit`](Spheres::might_hit)); of the
 //!   few lanes left, a sphere behind the ray's origin has no root ahead
@@ -20,7 +21,7 @@ use glam::{BVec4A, Vec4};
 use super::primitive::{Geometry, PreparedRay, Primitive, Weights};
 use super::traverse::Closest;
 use crate::toolkit::Vec3;
-use crate::tracer::{Quadratic, Ray, intersect_cone, intersect_sphere};
+use crate::tracer::{Quadratic, Ray, intersect_cone, intersect_sphere, intersect_triangle};
 
 /// Up to four primitives of one kind, and which scene objects they are.
 #[derive(Debug, Clone, Copy)]
@@ -135,7 +136,6 @@ impl Packet {
                 }
             }
             Shapes::Triangles(triangles) => {
-                let shear = ray.shear();
                 let found = triangles.intersect(ray, t_min, closest.limit());
                 for lane in lanes(found.hit & self.used) {
                     let t = found.t.to_array()[lane];
@@ -145,10 +145,10 @@ impl Packet {
                 }
                 for lane in lanes(found.on_edge & self.used) {
                     let corners = triangles.get(lane);
-                    if let Some((t, weights)) =
-                        shear.intersect(ray.ray.origin, corners, t_min, closest.limit())
+                    if let Some((t, alpha, beta)) =
+                        intersect_triangle(corners, ray.ray, t_min, closest.limit())
                     {
-                        closest.offer((t, weights), self.object[lane]);
+                        closest.offer((t, Weights::new(alpha, beta, 1.0)), self.object[lane]);
                     }
                 }
             }
@@ -176,13 +176,10 @@ impl Packet {
                 })
             }
             Shapes::Triangles(triangles) => {
-                let shear = ray.shear();
                 let found = triangles.intersect(ray, t_min, t_max);
                 found.hit & casting != 0
                     || lanes(found.on_edge & casting).any(|lane| {
-                        shear
-                            .intersect(ray.ray.origin, triangles.get(lane), t_min, t_max)
-                            .is_some()
+                        intersect_triangle(triangles.get(lane), ray.ray, t_min, t_max).is_some()
                     })
             }
             Shapes::Cone(cone) => cone.intersect(ray, t_min, t_max).is_some(),
@@ -335,7 +332,7 @@ impl Triangles {
             .map(|c| Vec3::from_array(c.map(|axis| axis.to_array()[lane])))
     }
 
-    /// Chapter 2's watertight test ([`Shear::intersect`](super::primitive::Shear::intersect)) in four lanes:
+    /// Chapter 2's watertight test (`intersect_triangle`) in four lanes:
     /// each corner projected into the ray's space by the same products
     /// and sums, the same edge functions, determinant and t.
     #[inline(always)]

@@ -136,21 +136,13 @@ impl Shear {
         }
     }
 
-    /// A corner in the ray's space, as chapter 2 computes it with p the
-    /// corner less r0:
+    /// Four corners in the ray's space, each coordinate in four lanes,
+    /// given r0's coordinates in four lanes: as chapter 2 computes one, with
+    /// p the corner less r0,
     ///
     /// ```text
     /// x = p[kx] − sx·p[kz],  y = p[ky] − sy·p[kz],  z = sz·p[kz]
     /// ```
-    #[inline]
-    fn project(&self, origin: Vec3, corner: Vec3) -> (f32, f32, f32) {
-        let p = (corner - origin).to_array();
-        let ([kx, ky, kz], [sx, sy, sz]) = (self.axes, self.scale);
-        (p[kx] - sx * p[kz], p[ky] - sy * p[kz], sz * p[kz])
-    }
-
-    /// [`project`](Self::project) for four corners at once, each coordinate
-    /// in four lanes, given r0's coordinates in four lanes.
     #[inline(always)]
     pub fn project4(&self, origin: &[Vec4; 3], corner: &[Vec4; 3]) -> (Vec4, Vec4, Vec4) {
         let p = [
@@ -166,43 +158,11 @@ impl Shear {
             Vec4::splat(sz) * p[kz],
         )
     }
-
-    /// Chapter 2's `intersect_triangle`, the same operations in the same
-    /// order, so the same t to the last bit. The barycentric weights are
-    /// kept as fractions, divided only for the one hit that is chosen.
-    #[inline]
-    pub fn intersect(
-        &self,
-        origin: Vec3,
-        [p0, p1, p2]: [Vec3; 3],
-        t_min: f32,
-        t_max: f32,
-    ) -> Option<(f32, Weights)> {
-        let (x0, y0, z0) = self.project(origin, p0);
-        let (x1, y1, z1) = self.project(origin, p1);
-        let (x2, y2, z2) = self.project(origin, p2);
-        let mut u = x2 * y1 - y2 * x1;
-        let mut v = x0 * y2 - y0 * x2;
-        let mut w = x1 * y0 - y1 * x0;
-        if u == 0.0 || v == 0.0 || w == 0.0 {
-            // On an edge in f32: decide in f64, as chapter 2 does.
-            u = edge_f64(x2, y2, x1, y1);
-            v = edge_f64(x0, y0, x2, y2);
-            w = edge_f64(x1, y1, x0, y0);
-        }
-        let outside = (u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0);
-        let determinant = u + v + w;
-        if outside || determinant == 0.0 {
-            return None;
-        }
-        let t = (u * z0 + v * z1 + w * z2) / determinant;
-        let weights = Weights { v, w, determinant };
-        (t.is_finite() && t > t_min && t < t_max).then_some((t, weights))
-    }
 }
 
 /// A triangle hit's barycentric weights (α, β) = (v/det, w/det), as chapter
-/// 2's `intersect_triangle` computes them, before the division.
+/// 2's `intersect_triangle` computes them, before the division (or after
+/// it, with det = 1, where chapter 2's test itself answered).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Weights {
     v: f32,
@@ -226,8 +186,4 @@ impl Weights {
     pub fn alpha_beta(&self) -> (f32, f32) {
         (self.v / self.determinant, self.w / self.determinant)
     }
-}
-
-fn edge_f64(px: f32, py: f32, qx: f32, qy: f32) -> f32 {
-    (px as f64 * qy as f64 - py as f64 * qx as f64) as f32
 }
