@@ -17,7 +17,8 @@
 //!   them, and a sphere behind the ray's origin is known to have no root
 //!   ahead, before chapter 2's divisions and square root in f64;
 //! - the traversal stack is not filled before use (`traverse.rs`);
-//! - a scene of a few objects gets no tree: its packets are tested in turn.
+//! - a scene of a few objects gets no tree: its packets are tested in turn,
+//!   each packet of triangles or cone after its own box.
 //!
 //! The tests are chapter 2's, to the last bit, and the closest hit is
 //! chosen as chapter 2 chooses it, so the pictures equal brute force's.
@@ -48,8 +49,11 @@ pub struct WideBvh<'a> {
     packets: Vec<Packet>,
     /// Planes: no box, so every ray tests them, as in chapter 2.
     planes: Vec<usize>,
-    /// A small scene: all primitives are tested in turn, with no box test.
+    /// A small scene: all primitives are tested in turn, with no tree.
     flat: bool,
+    /// In a small scene, each packet's box, tested before it (none for
+    /// spheres): [`Packet::bounds`].
+    flat_boxes: Vec<Option<Aabb>>,
 }
 
 impl<'a> WideBvh<'a> {
@@ -83,9 +87,14 @@ impl<'a> WideBvh<'a> {
             };
             tree.node(0);
         }
+        let flat_boxes = match small {
+            true => packets.iter().map(|p| p.bounds(objects)).collect(),
+            false => Vec::new(),
+        };
         WideBvh {
             objects,
             flat: small,
+            flat_boxes,
             nodes,
             packets,
             planes,
@@ -103,10 +112,10 @@ impl<'a> WideBvh<'a> {
 }
 
 /// Up to this many bounded objects go into one leaf, without a tree: a
-/// ray tests them all, as brute force does, with no box test. For so few,
-/// a tree's box tests and bookkeeping cost more than the tests they save
-/// (`cargo bench --bench small`: with 6 objects, the tree took 1.13 times
-/// brute force's time).
+/// ray tests them all, as brute force does, only a packet of triangles or
+/// a cone after its box. For so few, a tree's box tests and bookkeeping
+/// cost more than the tests they save (`cargo bench --bench small`: with 6
+/// objects, the tree took 1.13 times brute force's time).
 const FLAT_MAX: usize = 8;
 
 /// A "tree" of one leaf over all `items`: a root whose box holds them all.
@@ -255,7 +264,6 @@ fn area(binary: &[build::Node], n: usize) -> f32 {
 
 impl World for WideBvh<'_> {
     fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let prepared = PreparedRay::new(ray);
         let mut closest = traverse::Closest::new(t_max);
         for &object in &self.planes {
             let limit = closest.limit();
@@ -264,7 +272,7 @@ impl World for WideBvh<'_> {
                 closest.offer((t, Weights::NONE), object as u32);
             }
         }
-        self.closest(&prepared, t_min, &mut closest);
+        self.closest(&mut PreparedRay::new(ray), t_min, &mut closest);
         let (t, object, weights) = closest.found?;
         let object = object as usize;
         let weights = weights.alpha_beta();
@@ -282,6 +290,6 @@ impl World for WideBvh<'_> {
             self.objects[object].shadows
                 && crate::tracer::intersect(self.shape(object), ray, t_min, t_max).is_some()
         });
-        on_a_plane || self.any(&PreparedRay::new(ray), t_min, t_max)
+        on_a_plane || self.any(&mut PreparedRay::new(ray), t_min, t_max)
     }
 }

@@ -55,13 +55,12 @@ impl Closest {
 impl WideBvh<'_> {
     /// Offers `closest` every primitive hit in the boxes the ray enters
     /// before the closest hit found so far, nearer boxes first.
-    pub(super) fn closest(&self, ray: &PreparedRay, t_min: f32, closest: &mut Closest) {
+    pub(super) fn closest(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
         if self.nodes.is_empty() {
             return;
         }
         if self.flat {
-            offer_leaf(&self.packets, ray, t_min, closest);
-            return;
+            return self.offer_flat(ray, t_min, closest);
         }
         let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<(Child, f32), STACK>::new();
@@ -86,12 +85,12 @@ impl WideBvh<'_> {
 
     /// Is there a shadow-casting primitive on the ray in (t_min, t_max)?
     /// The first one found ends the search.
-    pub(super) fn any(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> bool {
+    pub(super) fn any(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
         if self.nodes.is_empty() {
             return false;
         }
         if self.flat {
-            return blocks(&self.packets, ray, t_min, t_max);
+            return self.blocks_flat(ray, t_min, t_max);
         }
         let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<u32, STACK>::new();
@@ -116,11 +115,33 @@ impl WideBvh<'_> {
         }
         false
     }
+
+    /// A small scene's [`closest`](Self::closest): every packet in turn,
+    /// spheres first (so that their hits shorten the ray), the others only
+    /// if the ray enters their box before the closest hit so far.
+    fn offer_flat(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
+        let (origin, inverse) = (ray.ray.origin, ray.ray.direction.recip());
+        for (packet, bounds) in self.packets.iter().zip(&self.flat_boxes) {
+            if bounds.is_none_or(|b| b.entry(origin, inverse, t_min, closest.limit()).is_some()) {
+                packet.offer_hits(ray, t_min, closest);
+            }
+        }
+    }
+
+    /// A small scene's [`any`](Self::any): every packet whose box (if it
+    /// has one) the ray enters.
+    fn blocks_flat(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
+        let (origin, inverse) = (ray.ray.origin, ray.ray.direction.recip());
+        let boxed = self.packets.iter().zip(&self.flat_boxes);
+        boxed
+            .filter(|(_, b)| b.is_none_or(|b| b.entry(origin, inverse, t_min, t_max).is_some()))
+            .any(|(packet, _)| packet.blocks(ray, t_min, t_max))
+    }
 }
 
 /// Offers `closest` the hits of a leaf's packets.
 #[inline]
-fn offer_leaf(packets: &[Packet], ray: &PreparedRay, t_min: f32, closest: &mut Closest) {
+fn offer_leaf(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
     for packet in packets {
         packet.offer_hits(ray, t_min, closest);
     }
@@ -128,7 +149,7 @@ fn offer_leaf(packets: &[Packet], ray: &PreparedRay, t_min: f32, closest: &mut C
 
 /// Does a primitive of `packets` cast a shadow on the ray in (t_min, t_max)?
 #[inline]
-fn blocks(packets: &[Packet], ray: &PreparedRay, t_min: f32, t_max: f32) -> bool {
+fn blocks(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
     packets.iter().any(|p| p.blocks(ray, t_min, t_max))
 }
 
