@@ -132,10 +132,14 @@ impl WideBvh<'_> {
     /// has one) the ray enters.
     fn blocks_flat(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
         let (origin, inverse) = (ray.ray.origin, ray.ray.direction.recip());
-        let boxed = self.packets.iter().zip(&self.flat_boxes);
-        boxed
-            .filter(|(_, b)| b.is_none_or(|b| b.entry(origin, inverse, t_min, t_max).is_some()))
-            .any(|(packet, _)| packet.blocks(ray, t_min, t_max))
+        for (packet, bounds) in self.packets.iter().zip(&self.flat_boxes) {
+            if bounds.is_none_or(|b| b.entry(origin, inverse, t_min, t_max).is_some())
+                && packet.blocks(ray, t_min, t_max)
+            {
+                return true;
+            }
+        }
+        false
     }
 }
 
