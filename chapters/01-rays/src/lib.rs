@@ -154,6 +154,12 @@ pub fn render(
     let samples = scene.image.samples.max(1);
     let camera = Camera::new(&scene.camera, width, height);
     let pixel = |x, y, stats: &mut Stats| {
+        if samples == 1 {
+            // One ray, through the pixel's centre: no positions to draw
+            // and no average to take.
+            stats.primary += 1;
+            return trace(&camera.primary_ray(x, y), stats);
+        }
         let index = y as u64 * width as u64 + x as u64;
         let mut sum = Color::ZERO;
         for (px, py) in sample_positions(x, y, samples, index) {
