@@ -155,6 +155,76 @@ fn rays_leaving_a_sphere_get_chapter_2s_answers() {
     assert_eq!(checked, 12 * 40 * 6 * 4 * 3);
 }
 
+/// Shadow rays whose blocker the wide BVH may decide without solving the
+/// sphere's quadratic: from inside a sphere and from outside through it, at
+/// several scales, with the light (t_max) a few units in the last place
+/// either side of each root, of |f| and of |f| + ρ, and far away. Each
+/// answer is chapter 4's.
+#[test]
+fn shadow_rays_through_spheres_get_chapter_4s_answers() {
+    let mut checked = 0;
+    for (center, radius) in [
+        (Vec3::new(0.5, -0.25, 1.0), 1.0),
+        (Vec3::new(300.0, 20.0, -1e3), 0.01),
+        (Vec3::new(-1e3, 5.0, 2.0), 1e3),
+    ] {
+        let objects = [Object {
+            shape: Shape::Sphere { center, radius },
+            material: 0,
+            shadows: true,
+        }];
+        let wide = WideBvh::build(&objects);
+        for k in 0..24 {
+            let angle = k as f32 * 0.9;
+            let normal = Vec3::new(angle.cos(), angle.sin(), (0.4 * angle).cos()).normalize();
+            for distance in [
+                0.0,
+                0.3,
+                1.0 - 1e-6,
+                1.0 - 1e-4,
+                1.0 + 1e-6,
+                1.0 + 1e-3,
+                1.5,
+                40.0,
+            ] {
+                let origin = center + distance * radius * normal;
+                let across = normal.cross(Vec3::Y).normalize();
+                for aim in [
+                    -normal,
+                    -normal + 0.5 * across,
+                    -normal + 0.99 * across,
+                    across,
+                ] {
+                    let ray = Ray::new(origin, aim);
+                    let f = (origin - center).length();
+                    let mut lights = vec![f32::INFINITY, 1e-3, f, f + radius, 2.0 * (f + radius)];
+                    if let Some((near, far)) = raybook::tracer::sphere_roots(center, radius, &ray) {
+                        lights.extend([near, far]);
+                    }
+                    for light in lights.clone() {
+                        let mut t = light;
+                        for _ in 0..4 {
+                            t = t.next_down();
+                        }
+                        for _ in 0..8 {
+                            if t > 0.0 {
+                                assert_eq!(
+                                    wide.any_hit(&ray, 0.0, t),
+                                    objects[..].any_hit(&ray, 0.0, t),
+                                    "{ray:?} to {t}"
+                                );
+                                checked += 1;
+                            }
+                            t = t.next_up();
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(checked > 3 * 24 * 8 * 4 * 5 * 8 / 2, "{checked}");
+}
+
 fn point() -> impl Strategy<Value = Vec3> {
     prop::array::uniform3(-4.0f32..4.0).prop_map(Vec3::from)
 }

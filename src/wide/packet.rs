@@ -11,8 +11,9 @@
 //! - four spheres go through the f32 test that rules out rays that pass
 //!   too far from the centre ([`might_hit`](Spheres::might_hit)); of the
 //!   few lanes left, a sphere behind the ray's origin has no root ahead
-//!   ([`intersect_sphere_ahead`]), and the others go one by one through
-//!   chapter 2's f64 test.
+//!   ([`intersect_sphere_ahead`]), a shadow ray's blocker is often sure
+//!   without solving ([`surely_meets`]), and the others go one by one
+//!   through chapter 2's f64 test.
 //!
 //! Cones are rare (the SPD's rings and tree) and stay one to a packet.
 
@@ -188,7 +189,9 @@ impl Packet {
             Shapes::Spheres(spheres) => {
                 lanes(spheres.might_hit(ray).bitmask() & casting).any(|lane| {
                     let (center, radius) = spheres.get(lane);
-                    intersect_sphere_ahead(center, radius, ray.ray, t_min, t_max).is_some()
+                    let quadratic = Quadratic::of(center, radius, ray.ray);
+                    (t_min == 0.0 && surely_meets(&quadratic, t_max))
+                        || intersect_sphere_ahead(center, radius, ray.ray, t_min, t_max).is_some()
                 })
             }
             Shapes::Triangles(triangles) => {
@@ -304,6 +307,51 @@ fn intersect_sphere_ahead(
         return None;
     }
     intersect_sphere(center, radius, ray, t_min, t_max)
+}
+
+/// Does chapter 2's `intersect_sphere(…, t_min = 0, t_max)` find a hit,
+/// where that is sure without its divisions and square root? `true` only
+/// when chapter 2 answers `Some`; `false` when not sure (the caller then
+/// asks chapter 2). A shadow ray needs only this yes or no, and in
+/// tinyraytracer's scene nearly every shadow ray that reached chapter 2's
+/// sphere test was blocked: from inside the glass ball, or from the board
+/// through a ball.
+///
+/// With chapter 2's a, b, c (`q`, in f64), f·f = |f|² and ρ²:
+/// - **From clearly inside** (c < −2⁻²⁰ρ²): the roots have opposite signs,
+///   so only the far one, the distance to where the ray leaves the sphere,
+///   can lie in (0, t_max). It is at most |f| + ρ, and (|f| + ρ)² ≤
+///   2(f·f + ρ²). So if t_max² > 2(f·f + ρ²)(1 + 2⁻¹⁸), it lies before
+///   t_max.
+/// - **From clearly outside, towards the centre, clearly through**
+///   (c > 2⁻²⁰ f·f, b < 0, b² − 4ac > 2⁻³⁰(b² + 4a f·f)): both roots are
+///   positive, and the near one, where the ray enters, is at most |f| away.
+///   So if t_max² > f·f (1 + 2⁻¹⁸), it lies before t_max.
+///
+/// The margins are far wider than chapter 2's rounding: its f, a, b, c and
+/// roots are exact to about 2⁻⁵⁰ of |f|² or ρ² (it works in f64), then
+/// rounded once to f32 (2⁻²⁴). "Clearly" inside or outside keeps the roots
+/// away from 0, so that their signs, and Δ's, are chapter 2's too, and the
+/// lower bounds on f·f and ρ² keep the roots from underflowing in f32.
+#[inline(always)]
+fn surely_meets(q: &Quadratic, t_max: f32) -> bool {
+    const CLEARLY: f64 = 1.0 / (1u64 << 20) as f64;
+    const BEYOND: f64 = 1.0 + 1.0 / (1u64 << 18) as f64;
+    const THROUGH: f64 = 1.0 / (1u64 << 30) as f64;
+    const TINY: f64 = 1e-60;
+    let Quadratic {
+        f, rho, a, b, c, ..
+    } = *q;
+    let (ff, rr) = (f.dot(f), rho * rho);
+    let reach = t_max as f64 * t_max as f64;
+    if ff < TINY || rr < TINY {
+        return false;
+    }
+    if c < -CLEARLY * rr {
+        return reach > 2.0 * (ff + rr) * BEYOND;
+    }
+    let through = b * b - 4.0 * a * c > THROUGH * (b * b + 4.0 * a * ff);
+    c > CLEARLY * ff && b < 0.0 && through && reach > ff * BEYOND
 }
 
 /// What the four-lane triangle test found.
