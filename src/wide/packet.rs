@@ -187,12 +187,17 @@ impl Packet {
         }
         match &self.shapes {
             Shapes::Spheres(spheres) => {
-                lanes(spheres.might_hit(ray).bitmask() & casting).any(|lane| {
+                // A loop, not `any`: that compiled to a call per shadow ray.
+                for lane in lanes(spheres.might_hit(ray).bitmask() & casting) {
                     let (center, radius) = spheres.get(lane);
                     let quadratic = Quadratic::of(center, radius, ray.ray);
-                    (t_min == 0.0 && surely_meets(&quadratic, t_max))
+                    if (t_min == 0.0 && surely_meets(&quadratic, t_max))
                         || intersect_sphere_ahead(center, radius, ray.ray, t_min, t_max).is_some()
-                })
+                    {
+                        return true;
+                    }
+                }
+                false
             }
             Shapes::Triangles(triangles) => {
                 let found = triangles.intersect(ray, t_min, t_max);
