@@ -62,6 +62,13 @@ impl WideBvh<'_> {
         if self.flat {
             return self.offer_flat(ray, t_min, closest);
         }
+        self.closest_in_tree(ray, t_min, closest);
+    }
+
+    /// [`closest`](Self::closest) walking the tree. Not inlined: its stack
+    /// would make every caller's frame several kilobytes, a small scene's too.
+    #[inline(never)]
+    fn closest_in_tree(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
         let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<(Child, f32), STACK>::new();
         stack.push((Child::Node(0), t_min));
@@ -92,6 +99,13 @@ impl WideBvh<'_> {
         if self.flat {
             return self.blocks_flat(ray, t_min, t_max);
         }
+        self.any_in_tree(ray, t_min, t_max)
+    }
+
+    /// [`any`](Self::any) walking the tree; not inlined, as
+    /// [`closest_in_tree`](Self::closest_in_tree).
+    #[inline(never)]
+    fn any_in_tree(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
         let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<u32, STACK>::new();
         stack.push(0);
