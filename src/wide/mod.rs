@@ -12,10 +12,12 @@
 //!   barycentric weights its triangle test found (chapter 2's `hit_at`
 //!   finds them again);
 //! - the per-ray parts of the slab and triangle tests are worked out once
-//!   per ray, not once per box or triangle (`primitive.rs`);
+//!   per ray, not once per box or triangle, the triangles' only when the
+//!   ray reaches one (`primitive.rs`);
 //! - spheres are first tested in f32, which rules out most rays that miss
-//!   them, and a sphere behind the ray's origin is known to have no root
-//!   ahead, before chapter 2's divisions and square root in f64;
+//!   them; a sphere behind the ray's origin is known to have no root
+//!   ahead, and a shadow ray's blocker is often sure from bounds on the
+//!   roots, before chapter 2's divisions and square root in f64;
 //! - the traversal stack is not filled before use (`traverse.rs`);
 //! - a scene of a few objects gets no tree: its packets are tested in turn,
 //!   each packet of triangles or cone after its own box.
