@@ -32,7 +32,9 @@ impl Image {
         // system hands out already zeroed and untouched: each page is then
         // first touched by the thread that renders into it, not cleared
         // one by one on this thread beforehand. (The conversion to Color at
-        // the end runs in place: the two have the same layout.)
+        // the end, 16 bytes a pixel where these are 12, runs in parallel
+        // too: on this thread alone it cost tinyraytracer's scene about 2
+        // ms of its 80.)
         let mut pixels = vec![[0.0f32; 3]; width as usize * height as usize];
         let stats = pixels
             .par_chunks_mut(width as usize)
@@ -49,7 +51,7 @@ impl Image {
         let image = Image {
             width,
             height,
-            pixels: pixels.into_iter().map(Color::from_array).collect(),
+            pixels: pixels.par_iter().map(|&p| Color::from_array(p)).collect(),
         };
         (image, stats)
     }

@@ -135,5 +135,5 @@ pub fn cone_point(
     let s = s.clamp(0.0, axis.height);
     let point = axis.base + s * axis.w + axis.radius(s) * across;
     let normal = (across - axis.slope * axis.w).normalize();
-    (point.as_vec3(), normal.as_vec3())
+    (point.as_vec3().into(), normal.as_vec3().into())
 }

@@ -113,7 +113,7 @@ impl Scene {
         let direct: Vec<&Light> = (self.lights.iter())
             .filter(|l| !matches!(l, Light::Ambient { .. }))
             .collect();
-        let diffuse = materials.iter().any(|m| m.color != glam::Vec3::ZERO);
+        let diffuse = materials.iter().any(|m| m.color != crate::Vec3::ZERO);
         let shiny = materials.iter().any(|m| m.specular > 0.0);
         let answers_direct = !direct.is_empty() && (diffuse || shiny);
         let casts = direct.iter().any(|l| match l {
@@ -128,7 +128,7 @@ impl Scene {
             (Effect::Shadows, casts && blocks && answers_direct),
             (
                 Effect::Reflection,
-                materials.iter().any(|m| m.reflectance != glam::Vec3::ZERO)
+                materials.iter().any(|m| m.reflectance != crate::Vec3::ZERO)
                     || (shiny && !direct.is_empty()),
             ),
             (
@@ -161,10 +161,10 @@ impl Scene {
     pub fn without(mut self, effects: Effects) -> Scene {
         for m in &mut self.materials {
             if effects.contains(Effect::Lambert) {
-                m.color = glam::Vec3::ZERO;
+                m.color = crate::Vec3::ZERO;
             }
             if effects.contains(Effect::Reflection) {
-                m.reflectance = glam::Vec3::ZERO;
+                m.reflectance = crate::Vec3::ZERO;
                 m.specular = 0.0;
             }
             if effects.contains(Effect::Refraction) {

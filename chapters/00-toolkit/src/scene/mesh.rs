@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use glam::Vec3;
+use crate::Vec3;
 
 use super::Shape;
 use super::rules::has_area;

@@ -19,10 +19,10 @@ use std::path::Path;
 
 pub use rules::{MAX_IMAGE_SIDE, is_square_sample_count};
 
+use crate::Vec3;
 pub use effects::Effects;
 pub use error::SceneError;
 pub use file::{BYTES_PER_OBJECT, MemoryLimit, write_sphere_cloud};
-use glam::Vec3;
 
 use crate::Color;
 

@@ -6,7 +6,7 @@
 
 use std::fmt::Display;
 
-use glam::Vec3;
+use crate::Vec3;
 
 use super::CameraSpec;
 

@@ -9,27 +9,26 @@
 //! | --- | --- | --- |
 //! | its table in the file (`[[objects]]`, type, centre, radius, material) | about 106 | while loading |
 //! | its records in a batch (toml's spanned values); 256 objects a batch, one batch per thread | about 3,000 | while its batch is parsed |
-//! | its [`Object`](crate::scene::Object): a `Shape` (76 bytes: the largest, a smooth triangle, has 6 vectors), material index, flag | 96 | always |
-//! | the same, in its batch's list, for the 32 batches parsed at once | 96 | while its group is parsed |
+//! | its [`Object`](crate::scene::Object): a `Shape` (112 bytes: the largest, a smooth triangle, has 6 vectors of 16 bytes), material index, flag | 128 | always |
+//! | the same, in its batch's list, for the 32 batches parsed at once | 128 | while its group is parsed |
 //! | the complete tracer's BVH: packets of 192 bytes, about 3.2 spheres each | 60 | while rendering |
 //! | the complete tracer's BVH: four-wide nodes of 128 bytes, about 0.09 a sphere | 12 | while rendering |
-//! | its build: chapter 8's `Item` (box, centre, index) and binary nodes (32 bytes, about 2 per primitive), a `Primitive` (geometry, index, flag), the collapse's spans | 48 + 64 + 48 + 20 | while building |
+//! | its build: chapter 8's `Item` (box, centre, index) and binary nodes (48 bytes, about 2 per primitive), a `Primitive` (geometry, index, flag), the collapse's spans | 64 + 96 + 80 + 20 | while building |
 //!
-//! So loading peaks near text + 96 bytes per object, and building the BVH
-//! near 96 + 200 once the text is gone. Measured peak RSS of `raybook
+//! So loading peaks near text + 128 bytes per object, and building the BVH
+//! near 128 + 260 once the text is gone. Measured peak RSS of `raybook
 //! render` (whole process) on scenes from `cargo run --release -p
-//! ch00-toolkit --example sphere_cloud`: 563 MiB for 2 million spheres,
-//! about 295 bytes per sphere (with chapter 8's BVH: 77 MiB for 250,000,
-//! 282 MiB for 1 million, 557 MiB for 2 million),
-//! its 106 bytes of text included. The estimate below adds a margin.
+//! ch00-toolkit --example sphere_cloud`: 762 MiB for 2 million spheres,
+//! about 400 bytes per sphere, its 106 bytes of text included (563 MiB
+//! when a vector was 12 bytes, not 16). The estimate below adds a margin.
 
 use super::outline::Outline;
 use crate::scene::SceneError;
 
 /// The peak memory of loading and rendering one object, besides the
-/// file's text (measured about 180, with a margin: see the module's table).
+/// file's text (measured about 290, with a margin: see the module's table).
 /// A mesh counts as one object here, however many triangles its OBJ has.
-pub const BYTES_PER_OBJECT: u64 = 320;
+pub const BYTES_PER_OBJECT: u64 = 448;
 
 /// Parsed whole (see [`Outline::unusual`]), toml holds spanned values of the
 /// whole file at once: measured 32 bytes of memory per byte of text.

@@ -3,7 +3,7 @@
 //! carries toml's span (the line) and serde_path_to_error's path
 //! (`objects[3].radius`). The rules shared with NFF are in `scene/rules.rs`.
 
-use glam::Vec3;
+use crate::Vec3;
 use serde::Deserialize;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 

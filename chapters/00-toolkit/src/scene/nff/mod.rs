@@ -31,7 +31,7 @@
 
 use std::path::Path;
 
-use glam::Vec3;
+use crate::Vec3;
 
 use super::MemoryLimit;
 use super::rules::{self, has_area};

@@ -16,7 +16,7 @@
 //! Cutting an ear changes only whether its two neighbours are ears, so each
 //! cut re-checks those two: O(n²) for n corners.
 
-use glam::Vec3;
+use crate::Vec3;
 
 /// The triangles of a planar polygon whose corners are given in order: n − 2
 /// triples of indices into `corners`, each in the polygon's own winding (so

@@ -2,9 +2,9 @@
 //! rules TOML scenes obey (`scene/rules.rs`).
 
 use super::reader::{Line, Reader};
+use crate::Vec3;
 use crate::scene::rules::{self, CameraProblem, CameraWords};
 use crate::scene::{CameraSpec, SceneError};
-use glam::Vec3;
 
 /// The viewpoint's lines in the order NFF writes them, and their numbers.
 const FIELDS: [(&str, usize); 6] = [
