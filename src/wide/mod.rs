@@ -89,9 +89,10 @@ impl<'a> WideBvh<'a> {
             };
             tree.node(0);
         }
-        let flat_boxes = match small {
-            true => packets.iter().map(|p| p.bounds(objects)).collect(),
-            false => Vec::new(),
+        let flat_boxes = if small {
+            packets.iter().map(|p| p.bounds(objects)).collect()
+        } else {
+            Vec::new()
         };
         WideBvh {
             objects,
