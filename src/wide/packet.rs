@@ -322,16 +322,17 @@ fn intersect_sphere_ahead(
 /// sphere test was blocked: from inside the glass ball, or from the board
 /// through a ball.
 ///
-/// With chapter 2's a, b, c (`q`, in f64), f·f = |f|² and ρ²:
+/// With chapter 2's a, b, c (`q`, in f64), f·f = |f|² and ρ², and a root t
+/// at the distance t·|rd| = t·√a along the ray:
 /// - **From clearly inside** (c < −2⁻²⁰ρ²): the roots have opposite signs,
-///   so only the far one, the distance to where the ray leaves the sphere,
-///   can lie in (0, t_max). It is at most |f| + ρ, and (|f| + ρ)² ≤
-///   2(f·f + ρ²). So if t_max² > 2(f·f + ρ²)(1 + 2⁻¹⁸), it lies before
+///   so only the far one, where the ray leaves the sphere, can lie in
+///   (0, t_max). That point is at most |f| + ρ away, and (|f| + ρ)² ≤
+///   2(f·f + ρ²). So if a·t_max² > 2(f·f + ρ²)(1 + 2⁻¹⁸), it lies before
 ///   t_max.
 /// - **From clearly outside, towards the centre, clearly through**
 ///   (c > 2⁻²⁰ f·f, b < 0, b² − 4ac > 2⁻³⁰(b² + 4a f·f)): both roots are
 ///   positive, and the near one, where the ray enters, is at most |f| away.
-///   So if t_max² > f·f (1 + 2⁻¹⁸), it lies before t_max.
+///   So if a·t_max² > f·f (1 + 2⁻¹⁸), it lies before t_max.
 ///
 /// The margins are far wider than chapter 2's rounding: its f, a, b, c and
 /// roots are exact to about 2⁻⁵⁰ of |f|² or ρ² (it works in f64), then
@@ -348,7 +349,7 @@ fn surely_meets(q: &Quadratic, t_max: f32) -> bool {
         f, rho, a, b, c, ..
     } = *q;
     let (ff, rr) = (f.dot(f), rho * rho);
-    let reach = t_max as f64 * t_max as f64;
+    let reach = a * (t_max as f64 * t_max as f64);
     if ff < TINY || rr < TINY {
         return false;
     }
