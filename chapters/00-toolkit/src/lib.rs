@@ -19,9 +19,9 @@ pub use glam::DVec3;
 /// `normalize` divides by the length where `Vec3`'s multiplies by its
 /// reciprocal, one rounding fewer. With it the complete tracer's shading
 /// takes 28% fewer instructions and its render of tinyraytracer's scene 1.1
-/// times less time, for 16 bytes a vector instead of 12. Compiler messages call it `Vec3A`: write `Vec3::new(x,
-/// y, z)` (it has no `Vec3 { x, y, z }` form) and use this `Vec3`, not
-/// glam's own.
+/// times less time, for 16 bytes a vector instead of 12. Compiler messages
+/// call it `Vec3A`: write `Vec3::new(x, y, z)` (it has no `Vec3 { x, y, z }`
+/// form) and use this `Vec3`, not glam's own.
 pub use glam::Vec3A as Vec3;
 pub use image::Image;
 pub use scene::{Scene, SceneError};
