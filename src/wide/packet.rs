@@ -191,8 +191,11 @@ impl Packet {
                 for lane in lanes(spheres.might_hit(ray).bitmask() & casting) {
                     let (center, radius) = spheres.get(lane);
                     let quadratic = Quadratic::of(center, radius, ray.ray);
-                    if (t_min == 0.0 && surely_meets(&quadratic, t_max))
-                        || intersect_sphere_ahead(center, radius, ray.ray, t_min, t_max).is_some()
+                    if t_min == 0.0 && surely_meets(&quadratic, t_max) {
+                        return true;
+                    }
+                    if !behind_origin(&quadratic, t_min)
+                        && intersect_sphere(center, radius, ray.ray, t_min, t_max).is_some()
                     {
                         return true;
                     }
@@ -289,7 +292,23 @@ impl Spheres {
 
 /// Chapter 2's `intersect_sphere`, without its divisions and square root
 /// where their answer is known beforehand: for a sphere behind the ray's
-/// origin and a ray that starts at t_min ≥ 0 (every ray the tracer casts).
+/// origin ([`behind_origin`]).
+#[inline(always)]
+fn intersect_sphere_ahead(
+    center: Vec3,
+    radius: f32,
+    ray: &Ray,
+    t_min: f32,
+    t_max: f32,
+) -> Option<f32> {
+    if behind_origin(&Quadratic::of(center, radius, ray), t_min) {
+        return None;
+    }
+    intersect_sphere(center, radius, ray, t_min, t_max)
+}
+
+/// Is the sphere of quadratic `q` behind the ray's origin, so that chapter
+/// 2 finds no root beyond t_min ≥ 0 (every ray the tracer casts)?
 ///
 /// Chapter 2 solves a·t² + b·t + c = 0 with a = rd·rd, b = 2 f·rd,
 /// c = f·f − ρ² (f = r0 − m, in f64). If b > 0 (the ray moves away from
@@ -300,18 +319,8 @@ impl Spheres {
 /// It is the common case of a shadow ray or a mirror ray leaving a
 /// sphere, which always meets its own sphere's line.
 #[inline(always)]
-fn intersect_sphere_ahead(
-    center: Vec3,
-    radius: f32,
-    ray: &Ray,
-    t_min: f32,
-    t_max: f32,
-) -> Option<f32> {
-    let Quadratic { b, c, .. } = Quadratic::of(center, radius, ray);
-    if t_min >= 0.0 && b > 0.0 && c >= 0.0 {
-        return None;
-    }
-    intersect_sphere(center, radius, ray, t_min, t_max)
+fn behind_origin(q: &Quadratic, t_min: f32) -> bool {
+    t_min >= 0.0 && q.b > 0.0 && q.c >= 0.0
 }
 
 /// Does chapter 2's `intersect_sphere(…, t_min = 0, t_max)` find a hit,
