@@ -27,9 +27,9 @@ use std::time::{Duration, Instant};
 
 use ch03_lambert::render_lambert;
 use raybook::bench::median;
-use raybook::toolkit::cli::EffectPlan;
 use raybook::toolkit::{Image, Scene};
 use raybook::tracer::{Termination, Tracer, render_complete, render_whitted};
+use raybook::workbench::cli::EffectPlan;
 
 /// Chapter 3's default scene, whole and with the effects chapter 3 cannot
 /// simulate switched off.

@@ -9,12 +9,13 @@
 //! machine's drift affects both sides of a ratio alike. Each render must
 //! make the same picture as brute force's, or the bench stops.
 
+use raybook::scene_files;
 use std::hint::black_box;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
 use raybook::bench::median;
-use raybook::toolkit::scene::nff;
+use raybook::scene_files::nff;
 use raybook::toolkit::{Image, Scene};
 use raybook::tracer::{Termination, render_complete};
 
@@ -22,7 +23,7 @@ use raybook::tracer::{Termination, render_complete};
 /// of the chapters'.
 fn scenes() -> Vec<(String, Scene)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let toml = |path: &str| Scene::load(root.join(path)).unwrap();
+    let toml = |path: &str| scene_files::load(root.join(path)).unwrap();
     let spd = |name: &str| nff::load(root.join("scenes/spd").join(name)).unwrap();
     let scenes = [
         ("tinyraytracer", toml("scenes/peers/tinyraytracer.toml")),

@@ -5,9 +5,9 @@
 //! progress, verify and handout from the `workbook` crate, which a student
 //! runs on its own (`cargo run -p workbook -- progress`).
 
-pub use ch07_termination::toolkit;
-/// NFF, the SPD scenes' format: read by the toolkit, beside TOML and OBJ.
-pub use toolkit::scene::nff;
+pub use ch07_termination::{scene_files, toolkit, workbench};
+/// NFF, the SPD scenes' format: read by the scene-files crate, beside TOML and OBJ.
+pub use scene_files::nff;
 
 pub mod accuracy;
 pub mod bench;
@@ -17,8 +17,8 @@ pub mod wide;
 /// The workbook's tools (the `workbook` crate), under `raybook` too.
 pub use workbook::{handout, progress, verify};
 
-use toolkit::cli::Chapter;
 use toolkit::{Image, Scene, Stats};
+use workbench::cli::Chapter;
 
 /// The chapter whose tracer raybook renders with, and whose default scene is
 /// the showcase.

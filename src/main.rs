@@ -4,8 +4,8 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use raybook::toolkit::Scene;
-use raybook::toolkit::cli::{Pixel, RenderArgs, run_or_explain};
-use raybook::toolkit::ray_tree::{RayNode, TracerInfo};
+use raybook::workbench::cli::{Pixel, RenderArgs, run_or_explain};
+use raybook::workbench::ray_tree::{RayNode, TracerInfo};
 use raybook::{CHAPTER, render};
 
 /// raybook: a step-by-step ray tracer. Without a command, renders the
@@ -43,7 +43,7 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    raybook::toolkit::cli::end_quietly_when_output_closes();
+    raybook::workbench::cli::end_quietly_when_output_closes();
     match Cli::parse().command {
         Some(Command::Render(args)) => render_or_explain(&args),
         Some(Command::Bench(args)) => raybook::bench::run(&args),

@@ -2,11 +2,12 @@
 //! complete. Times are measured and reported, never asserted.
 
 use raybook::accuracy::{Knob, Measurement, all_settings, csv, pareto, settings, sweep, table};
+use raybook::scene_files;
 use raybook::toolkit::Scene;
 
 fn scene(path: &str) -> Scene {
     let root = env!("CARGO_MANIFEST_DIR");
-    Scene::load(format!("{root}/chapters/{path}"))
+    scene_files::load(format!("{root}/chapters/{path}"))
         .unwrap()
         .with_size(48, 36)
 }

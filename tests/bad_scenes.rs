@@ -1,7 +1,7 @@
 //! Every kind of bad scene file gets an error naming the file, the line, the
 //! field path and what would be valid, before anything is rendered.
 
-use raybook::toolkit::{Scene, SceneError};
+use raybook::scene_files::{self, SceneError};
 
 /// A small valid scene; each test breaks one thing in it.
 const GOOD: &str = r#"
@@ -49,7 +49,8 @@ fn broken(from: &str, to: &str) -> SceneError {
         "test setup: {from:?} is not in the scene"
     );
     let text = GOOD.replacen(from, to, 1);
-    let error = Scene::parse(&text, "bad.toml").expect_err("the broken scene must be refused");
+    let error =
+        scene_files::parse(&text, "bad.toml").expect_err("the broken scene must be refused");
     println!("{error}\n");
     error
 }
@@ -75,7 +76,7 @@ fn assert_error(e: &SceneError, line: u32, path: &str, words: &[&str]) {
 
 #[test]
 fn the_good_scene_parses() {
-    let scene = Scene::parse(GOOD, "good.toml").unwrap();
+    let scene = scene_files::parse(GOOD, "good.toml").unwrap();
     assert_eq!(scene.objects.len(), 3);
     assert_eq!(scene.lights.len(), 1);
     assert_eq!(scene.materials[0].name, "red");
@@ -330,7 +331,7 @@ fn not_toml_at_all() {
 
 #[test]
 fn unreadable_file() {
-    let e = Scene::load("no/such/scene.toml").unwrap_err();
+    let e = scene_files::load("no/such/scene.toml").unwrap_err();
     assert_eq!(e.file, "no/such/scene.toml");
     assert!(e.message.contains("cannot read"), "{e}");
 }
@@ -385,7 +386,7 @@ fn a_point_light_says_its_falloff_in_words() {
         &["linear", "inverse_square", "none"],
     );
     let good = GOOD.replacen(from, "intensity = 40.0\nfalloff = \"none\"", 1);
-    let scene = Scene::parse(&good, "good.toml").unwrap();
+    let scene = scene_files::parse(&good, "good.toml").unwrap();
     let raybook::toolkit::scene::Light::Point { falloff, .. } = scene.lights[0] else {
         panic!("a point light");
     };
@@ -403,7 +404,7 @@ const CONE: &str =
 
 #[test]
 fn a_cone_is_read_and_its_ends_are_checked() {
-    let scene = Scene::parse(&cone(CONE), "good.toml").unwrap();
+    let scene = scene_files::parse(&cone(CONE), "good.toml").unwrap();
     let raybook::toolkit::scene::Shape::Cone {
         apex, apex_radius, ..
     } = scene.objects[0].shape
@@ -412,7 +413,7 @@ fn a_cone_is_read_and_its_ends_are_checked() {
     };
     assert_eq!((apex.y, apex_radius), (2.0, 0.5));
     let refused = |fields: &str| {
-        let e = Scene::parse(&cone(fields), "bad.toml").expect_err("must be refused");
+        let e = scene_files::parse(&cone(fields), "bad.toml").expect_err("must be refused");
         println!("{e}\n");
         e
     };

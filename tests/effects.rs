@@ -4,13 +4,14 @@
 mod common;
 
 use raybook::render;
-use raybook::toolkit::cli::{Chapter, EffectPlan};
+use raybook::scene_files;
 use raybook::toolkit::scene::{Effect, Effects, Light};
 use raybook::toolkit::{Scene, Stats};
+use raybook::workbench::cli::{Chapter, EffectPlan};
 
 fn chapter_scene(path: &str) -> Scene {
     let root = env!("CARGO_MANIFEST_DIR");
-    Scene::load(format!("{root}/chapters/{path}"))
+    scene_files::load(format!("{root}/chapters/{path}"))
         .unwrap()
         .with_size(80, 60)
 }
@@ -94,7 +95,7 @@ fn a_light_behind_every_surface_costs_no_shadow_ray() {
         vertices = [[-1, 1, 0], [1, 1, 0], [0, 1, -1]]
         material = "grey"
     "#;
-    let scene = Scene::parse(text, "behind.toml").unwrap();
+    let scene = scene_files::parse(text, "behind.toml").unwrap();
     let (image, s) = render(&scene, || {});
     assert_eq!(s.shadow, 0);
     assert!(
@@ -194,7 +195,7 @@ fn the_tracer_chosen_for_the_effects_gives_the_full_tracers_picture_and_counts()
     for file in common::chapter_scene_files() {
         let (path, scene) = (
             file.display(),
-            Scene::load(&file).unwrap().with_size(80, 60),
+            scene_files::load(&file).unwrap().with_size(80, 60),
         );
         // Each scene as it is, and cut down to what chapter 4 can show.
         for scene in [scene.clone(), scene.without(secondary)] {

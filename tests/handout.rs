@@ -15,7 +15,7 @@ use std::time::Instant;
 use raybook::handout::check;
 use raybook::handout::take_out::ReferenceTests;
 use raybook::handout::{Region, workspace_regions};
-use raybook::toolkit::chapters::{self, ChapterEntry};
+use raybook::workbench::chapters::{self, ChapterEntry};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -55,7 +55,7 @@ fn every_chapter_with_exercises_has_some_and_the_workbook_at_least_22() {
         );
         assert!(!region.hint.is_empty(), "{}: no hint", region.id);
         let seam = format!(
-            "crate::toolkit::exercise::solution_begins({:?});",
+            "crate::workbench::exercise::solution_begins({:?});",
             region.id
         );
         assert_eq!(
@@ -104,7 +104,7 @@ fn every_recorded_mistake_and_lecture_solution_names_an_exercise() {
 
 /// Each chapter's exercises taken out: its own tests fail, and each
 /// exercise's todo! is among the panics. The reference's test binaries are
-/// run with the solutions taken out at run time (`toolkit::exercise`), so
+/// run with the solutions taken out at run time (`workbench::exercise`), so
 /// nothing is built again.
 #[test]
 fn each_exercise_makes_a_test_of_its_chapter_fail() {

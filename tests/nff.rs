@@ -3,10 +3,11 @@
 
 use ch03_lambert::{Arrival, arrival};
 use raybook::nff;
+use raybook::scene_files::{self, SceneError};
 use raybook::toolkit::scene::{Falloff, Light, Shape, TraceSpec};
-use raybook::toolkit::snapshot::workspace_root;
-use raybook::toolkit::{Color, Scene, SceneError, Vec3};
+use raybook::toolkit::{Color, Scene, Vec3};
 use raybook::tracer::{Termination, World, render_complete};
+use raybook::workbench::snapshot::workspace_root;
 
 /// A small scene using every entity raybook reads.
 const GOOD: &str = "# a comment
@@ -199,14 +200,14 @@ fn the_viewpoint_is_checked_by_the_rules_of_toml_scenes() {
     assert_eq!((e.path.as_str(), e.column), ("v.resolution", Some(15)));
     let toml = "[camera]\neye = [0, -5, 1]\nlook_at = [0, 0, 0]\nup = [0, 0, 1]\nvfov = 45\n\
                 [image]\nwidth = 64\nheight = 0\n";
-    let same = Scene::parse(toml, "bad.toml").unwrap_err();
+    let same = scene_files::parse(toml, "bad.toml").unwrap_err();
     assert_eq!(e.message, same.message);
     let e = broken(&with_line(7, "angle 200"));
     assert_eq!(e.path, "v.angle");
     let toml = toml.replace("vfov = 45", "vfov = 200");
     assert_eq!(
         e.message,
-        Scene::parse(&toml, "bad.toml").unwrap_err().message
+        scene_files::parse(&toml, "bad.toml").unwrap_err().message
     );
 }
 
@@ -484,7 +485,7 @@ fn render_takes_the_sample_count_of_the_command_line_for_nff_too() {
 
 #[test]
 fn the_render_arguments_read_nff_with_every_override() {
-    let args = raybook::toolkit::cli::RenderArgs {
+    let args = raybook::workbench::cli::RenderArgs {
         scene: Some(spd("balls-1.nff")),
         width: Some(8),
         height: Some(6),
@@ -513,7 +514,7 @@ fn an_nff_scene_too_large_for_the_memory_is_refused_before_it_is_converted() {
     // fail on the next line, so a refusal without a line came first.
     let text = format!("{GOOD}{}", "s 1 2 3\n".repeat(1000));
     let lines = text.lines().count();
-    let limit = raybook::toolkit::scene::MemoryLimit {
+    let limit = raybook::scene_files::MemoryLimit {
         bytes: 200_000,
         source: "a test's limit".into(),
     };
@@ -527,7 +528,7 @@ fn an_nff_scene_too_large_for_the_memory_is_refused_before_it_is_converted() {
     ] {
         assert!(e.message.contains(words), "{words:?} not in {e}");
     }
-    let within = raybook::toolkit::scene::MemoryLimit {
+    let within = raybook::scene_files::MemoryLimit {
         bytes: 10_000_000,
         source: "a test's limit".into(),
     };

@@ -9,13 +9,14 @@ mod common;
 
 use proptest::prelude::*;
 use raybook::render;
+use raybook::scene_files;
 use raybook::toolkit::scene::{Falloff, Light, Object, Shape};
-use raybook::toolkit::snapshot;
 use raybook::toolkit::{Scene, Vec3};
 use raybook::tracer::{
     Camera, Ray, Termination, World, closest_hit, intersect, offset_origin, reflect, refract,
     render_terminated, schlick,
 };
+use raybook::workbench::snapshot;
 
 fn object(shape: Shape) -> Object {
     Object {
@@ -295,7 +296,7 @@ fn a_light_on_a_surface_or_inside_an_object_is_finite() {
 #[test]
 fn the_mirror_corridor_is_finite_and_ended_by_depth() {
     let root = env!("CARGO_MANIFEST_DIR");
-    let scene = Scene::load(format!(
+    let scene = scene_files::load(format!(
         "{root}/chapters/07-termination/scenes/mirrors.toml"
     ))
     .unwrap();
@@ -316,7 +317,7 @@ fn the_mirror_corridor_is_finite_and_ended_by_depth() {
 #[test]
 fn no_scene_in_the_repository_renders_a_nan() {
     for path in common::chapter_scene_files() {
-        let scene = Scene::load(&path).unwrap().with_size(48, 36);
+        let scene = scene_files::load(&path).unwrap().with_size(48, 36);
         let (image, _) = render(&scene, || {});
         let bad = image.pixels.iter().filter(|c| !c.is_finite()).count();
         assert_eq!(bad, 0, "{}", path.display());

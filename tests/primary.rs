@@ -8,7 +8,7 @@ use std::process::{Command, Output};
 
 use raybook::bench::{PYTHON_VAR, hit_distances, primary_rays, primary_world};
 use raybook::toolkit::Scene;
-use raybook::toolkit::snapshot::workspace_root;
+use raybook::workbench::snapshot::workspace_root;
 
 fn spd(name: &str, width: u32, height: u32) -> Scene {
     let path = workspace_root().join("scenes/spd").join(name);

@@ -5,8 +5,9 @@ mod common;
 
 use proptest::prelude::*;
 use raybook::render;
-use raybook::toolkit::snapshot::workspace_root;
-use raybook::toolkit::{Scene, SceneError};
+use raybook::scene_files::{self, SceneError};
+use raybook::toolkit::Scene;
+use raybook::workbench::snapshot::workspace_root;
 
 /// Every scene file of the repository, as mutation seeds.
 fn seeds() -> Vec<String> {
@@ -151,7 +152,7 @@ proptest! {
         for m in &mutations {
             text = apply(&text, m);
         }
-        check(Scene::parse(&text, "fuzz.toml"), "fuzz.toml")?;
+        check(scene_files::parse(&text, "fuzz.toml"), "fuzz.toml")?;
     }
 }
 

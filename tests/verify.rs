@@ -1,16 +1,17 @@
 //! `workbook verify` accepts a correct picture and names what is wrong with
 //! a mistaken one.
 
+use ch03_lambert::scene_files;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use ch03_lambert::{Camera, Surface, direct_light, lambert};
-use raybook::toolkit::compare::{Tolerance, compare};
 use raybook::toolkit::{Color, Image, Scene};
 use raybook::verify::{
     Diagnosis, Mistake, ObjectMap, ObjectName, Reference, Swap, reference, references, shape_name,
     verify,
 };
+use raybook::workbench::compare::{Tolerance, compare};
 
 fn temp(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("raybook-verify-{}", std::process::id()));
@@ -492,7 +493,7 @@ fn the_command_names_the_mistake_and_its_fix() {
 /// centre): each pixel's first object hit, by chapter 2's closest hit
 /// through chapter 1's camera.
 fn object_map(reference: &Reference) -> ObjectMap {
-    let scene = Scene::load(reference.chapter.default_scene_path())
+    let scene = scene_files::load(reference.chapter.default_scene_path())
         .unwrap()
         .with_size(160, 120);
     assert!(
@@ -545,7 +546,7 @@ fn the_object_maps_are_current() {
             assert_eq!(
                 reference.objects,
                 Some(text.as_str()),
-                "the workbook binary embeds an older {name}: rebuild it (touch tools/src/verify/mod.rs)"
+                "the workbook binary embeds an older {name}: rebuild it (touch crates/workbook/src/verify/mod.rs)"
             );
         }
     }

@@ -4,11 +4,13 @@
 mod common;
 
 use proptest::prelude::*;
-use raybook::toolkit::scene::{Object, Shape, nff};
-use raybook::toolkit::snapshot::workspace_root;
+use raybook::nff;
+use raybook::scene_files;
+use raybook::toolkit::scene::{Object, Shape};
 use raybook::toolkit::{Image, Scene, Stats, Vec3};
 use raybook::tracer::{Ray, Termination, World, render_complete};
 use raybook::wide::WideBvh;
+use raybook::workbench::snapshot::workspace_root;
 
 fn render(scene: &Scene, world: &(impl World + ?Sized)) -> (Image, Stats) {
     render_complete(scene, world, Termination::of(scene), || {})
@@ -17,7 +19,7 @@ fn render(scene: &Scene, world: &(impl World + ?Sized)) -> (Image, Stats) {
 #[test]
 fn wide_bvh_and_brute_force_give_the_same_picture_on_every_chapter_scene() {
     for path in common::chapter_scene_files() {
-        let scene = Scene::load(&path).unwrap().with_size(80, 60);
+        let scene = scene_files::load(&path).unwrap().with_size(80, 60);
         let wide = WideBvh::build(&scene.objects);
         let same = render(&scene, &scene.objects[..]) == render(&scene, &wide);
         assert!(same, "{} differs", path.display());
@@ -360,11 +362,11 @@ fn agrees_with_brute_force(
 
 #[test]
 fn the_complete_tracer_makes_the_same_bytes_on_any_number_of_threads() {
-    use raybook::toolkit::cli::with_threads;
+    use raybook::workbench::cli::with_threads;
     let root = workspace_root();
     let scenes = [
         nff::load(root.join("scenes/spd/mount-3.nff")).unwrap(),
-        Scene::load(root.join("scenes/peers/tinyraytracer.toml")).unwrap(),
+        scene_files::load(root.join("scenes/peers/tinyraytracer.toml")).unwrap(),
     ];
     for scene in scenes {
         let scene = scene.with_size(64, 48);

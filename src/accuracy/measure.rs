@@ -8,10 +8,10 @@ use indicatif::ProgressBar;
 
 use super::settings::{Knob, Setting, all_settings};
 use crate::bench::median;
-use crate::toolkit::compare::{psnr, rmse_clamped};
 use crate::toolkit::scene::Effects;
 use crate::toolkit::{Color, Image, Scene};
 use crate::tracer::render_complete;
+use crate::workbench::compare::{psnr, rmse_clamped};
 
 /// How a setting did: what it cost, and how far its picture is from its
 /// knob's reference.

@@ -14,6 +14,7 @@ mod plot;
 mod report;
 mod settings;
 
+use crate::scene_files;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -110,7 +111,7 @@ pub fn main(args: &AccuracyArgs) -> ExitCode {
 /// The scene file at `path`, or the showcase.
 fn load_scene(path: Option<&Path>) -> Result<Scene, String> {
     let loaded = match path {
-        Some(path) => Scene::load(path),
+        Some(path) => scene_files::load(path),
         None => crate::CHAPTER.default_scene(),
     };
     loaded.map_err(|e| e.to_string())

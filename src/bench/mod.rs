@@ -29,7 +29,7 @@ use indicatif::{HumanDuration, ProgressBar, ProgressStyle};
 pub use fractals::{with_sphereflake, with_tetrahedron};
 pub use primary::{Agreement, PYTHON_VAR, agreement, hit_distances, primary_rays, primary_world};
 
-use crate::toolkit::scene::MAX_IMAGE_SIDE;
+use crate::scene_files::MAX_IMAGE_SIDE;
 
 /// The SPD scenes that come with this repository (`scenes/spd`, see its
 /// README.md), found wherever the command is run from.

@@ -10,9 +10,9 @@ use super::{
     BenchArgs, median, scene_name, scene_progress, table, with_sphereflake, with_tetrahedron,
 };
 use crate::toolkit::Scene;
-use crate::toolkit::cli::with_threads;
 use crate::toolkit::scene::Shape;
 use crate::tracer::{Termination, render_complete};
+use crate::workbench::cli::with_threads;
 
 /// Sphereflake levels generated beyond the SPD files (balls-5, balls-6).
 const FLAKE_LEVELS: [u32; 2] = [5, 6];

@@ -117,7 +117,7 @@ pub const TINYRAYTRACER_SCENE: &str = concat!(
 /// in) with as many OpenMP threads.
 fn time_tinyraytracer(program: &Path, setup: &Setup) -> Result<SceneTiming, String> {
     let scene = Path::new(TINYRAYTRACER_SCENE);
-    let primitives = crate::toolkit::Scene::load(scene)
+    let primitives = crate::scene_files::load(scene)
         .map_err(|e| e.to_string())?
         .objects
         .len();

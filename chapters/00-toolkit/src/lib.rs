@@ -1,13 +1,7 @@
 #![doc = include_str!("../README.md")]
 
-pub mod chapters;
-pub mod cli;
-pub mod compare;
-pub mod exercise;
 pub mod image;
-pub mod ray_tree;
 pub mod scene;
-pub mod snapshot;
 pub mod stats;
 
 pub use glam::DVec3;
@@ -24,7 +18,7 @@ pub use glam::DVec3;
 /// form) and use this `Vec3`, not glam's own.
 pub use glam::Vec3A as Vec3;
 pub use image::Image;
-pub use scene::{Scene, SceneError};
+pub use scene::Scene;
 pub use stats::Stats;
 
 /// Linear RGB, one f32 per channel. Values above 1 are allowed while we add

@@ -7,6 +7,7 @@ use ch00_toolkit::scene::CameraSpec;
 use ch00_toolkit::{Color, Image, Scene, Stats, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
+pub use workbench::{self, scene_files};
 
 /// A ray r(t) = r0 + t·rd with a unit direction, so t is a distance.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -30,7 +31,7 @@ impl Ray {
     /// The point r(t) = r0 + t·rd.
     pub fn at(&self, t: f32) -> Vec3 {
         // EXERCISE(ch01-at): the point of the ray at distance t from its origin
-        crate::toolkit::exercise::solution_begins("ch01-at");
+        crate::workbench::exercise::solution_begins("ch01-at");
         self.origin + t * self.direction
         // END EXERCISE
     }
@@ -70,7 +71,7 @@ impl Camera {
     /// * half_width = half_height · width / height, so pixels are square.
     pub fn new(spec: &CameraSpec, width: u32, height: u32) -> Camera {
         // EXERCISE(ch01-frame): the camera's unit frame (forward towards look_at, right to the viewer's right, up at right angles to both) and the image plane's half width and half height at distance 1, from the vertical field of view and the aspect ratio
-        crate::toolkit::exercise::solution_begins("ch01-frame");
+        crate::workbench::exercise::solution_begins("ch01-frame");
         let forward = (spec.look_at - spec.eye).normalize();
         let right = forward.cross(spec.up).normalize();
         let up = right.cross(forward);
@@ -95,7 +96,7 @@ impl Camera {
     /// scene, the opposite way to the light that makes the picture.
     pub fn ray_through(&self, px: f32, py: f32) -> Ray {
         // EXERCISE(ch01-ray-through): the ray from the eye through the point of the image plane at pixel position (px, py), the image's top-left corner being (0, 0) and its bottom-right (width, height)
-        crate::toolkit::exercise::solution_begins("ch01-ray-through");
+        crate::workbench::exercise::solution_begins("ch01-ray-through");
         let u = (2.0 * px / self.width as f32 - 1.0) * self.half_width;
         let v = (1.0 - 2.0 * py / self.height as f32) * self.half_height;
         Ray::new(self.eye, self.forward + u * self.right + v * self.up)
@@ -189,7 +190,7 @@ pub fn render_sky(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).
-pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+pub const CHAPTER: workbench::cli::Chapter = workbench::cli::Chapter {
     package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
 };

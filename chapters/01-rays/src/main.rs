@@ -1,6 +1,6 @@
 //! Renders what the camera sees of an empty world: one ray per pixel.
 
-use ch01_rays::toolkit::cli::{RenderArgs, run_or_explain};
+use ch01_rays::workbench::cli::{RenderArgs, run_or_explain};
 use ch01_rays::{CHAPTER, ray_tree, render_sky};
 use clap::Parser;
 

@@ -1,9 +1,9 @@
 //! Chapter 1's ray tree (`--pixel X,Y`): the pixel's primary ray, which
 //! meets nothing in this chapter's empty world and sees the sky.
 
-use crate::toolkit::cli::Pixel;
-use crate::toolkit::ray_tree::{End, RayKind, RayNode, TracerInfo};
 use crate::toolkit::{Scene, Vec3};
+use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::{End, RayKind, RayNode, TracerInfo};
 use crate::{Camera, Ray, sky};
 
 /// The ray the tree follows: the scene camera's primary ray through the

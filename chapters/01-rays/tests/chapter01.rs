@@ -1,8 +1,8 @@
 //! Chapter 1: the ray equation, the pinhole camera and its picture.
 
 use ch01_rays::toolkit::scene::CameraSpec;
-use ch01_rays::toolkit::snapshot::assert_image;
 use ch01_rays::toolkit::{Scene, Vec3};
+use ch01_rays::workbench::snapshot::assert_image;
 use ch01_rays::{CHAPTER, Camera, Ray, render_sky};
 
 fn scene() -> Scene {

@@ -7,7 +7,7 @@ mod triangle;
 
 pub mod ray_tree;
 
-pub use ch01_rays::{Camera, Ray, render, toolkit};
+pub use ch01_rays::{Camera, Ray, render, scene_files, toolkit, workbench};
 pub use cone::{cone_point, intersect_cone};
 pub use plane::{intersect_plane, plane_point};
 pub use sphere::{Quadratic, intersect_sphere, sphere_point, sphere_roots, sphere_roots_abc};
@@ -146,7 +146,7 @@ fn largest(p: Vec3) -> f32 {
 /// an object behind it is rejected without more work.
 pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
     // EXERCISE(ch02-closest): the hit of the object met nearest along the ray within (t_min, t_max), as a Hit, or None if the ray meets none
-    crate::toolkit::exercise::solution_begins("ch02-closest");
+    crate::workbench::exercise::solution_begins("ch02-closest");
     let mut closest: Option<(f32, usize)> = None;
     for (index, object) in objects.iter().enumerate() {
         let bound = closest.map_or(t_max, |(t, _)| t);
@@ -192,7 +192,7 @@ pub fn render_hits(scene: &Scene, view: View, on_row: impl Fn() + Sync) -> (Imag
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).
-pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+pub const CHAPTER: workbench::cli::Chapter = workbench::cli::Chapter {
     package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
 };

@@ -1,6 +1,6 @@
 //! Renders the closest hit of every pixel's ray, flat, as normals or as depth.
 
-use ch02_hits::toolkit::cli::{RenderArgs, run_or_explain};
+use ch02_hits::workbench::cli::{RenderArgs, run_or_explain};
 use ch02_hits::{CHAPTER, View, ray_tree, render_hits};
 use clap::Parser;
 

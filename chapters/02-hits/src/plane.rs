@@ -18,7 +18,7 @@ pub fn intersect_plane(
     t_max: f32,
 ) -> Option<f32> {
     // EXERCISE(ch02-plane): the distance t at which r(t) satisfies the plane's equation; None for a ray parallel to the plane or a t that is not finite or not strictly between t_min and t_max
-    crate::toolkit::exercise::solution_begins("ch02-plane");
+    crate::workbench::exercise::solution_begins("ch02-plane");
     let denominator = normal.dot(ray.direction);
     if denominator == 0.0 {
         return None;

@@ -3,10 +3,10 @@
 
 pub use ch01_rays::ray_tree::{primary_ray, ray_node, rgb};
 
-use crate::toolkit::cli::Pixel;
-use crate::toolkit::ray_tree::{End, HitNode, RayKind, RayNode, Side, TracerInfo, shape_name};
 use crate::toolkit::scene::Shape;
 use crate::toolkit::{Scene, Vec3};
+use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::{End, HitNode, RayKind, RayNode, Side, TracerInfo, shape_name};
 use crate::{Hit, Ray, View, closest_hit, shade, sphere_roots};
 
 /// What the tree says of a hit: the object, t, the point, the normal (as

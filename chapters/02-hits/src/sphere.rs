@@ -23,7 +23,7 @@ use crate::toolkit::{DVec3, Vec3};
 /// form that stays right for a small sphere far away.
 pub fn sphere_roots_abc(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> {
     // EXERCISE(ch02-sphere): the lecture's quadratic a·t² + b·t + c = 0 for the ray's line and the sphere; None when the discriminant says the line passes by; both roots, nearest first (a tangent line has one double root)
-    crate::toolkit::exercise::solution_begins("ch02-sphere");
+    crate::workbench::exercise::solution_begins("ch02-sphere");
     let f = ray.origin - center;
     let a = ray.direction.dot(ray.direction);
     let b = 2.0 * f.dot(ray.direction);
@@ -93,7 +93,7 @@ pub fn intersect_sphere(
 ) -> Option<f32> {
     let (near, far) = sphere_roots(center, radius, ray)?;
     // EXERCISE(ch02-nearest): the nearest of the two roots that lies strictly between t_min and t_max, if either does
-    crate::toolkit::exercise::solution_begins("ch02-nearest");
+    crate::workbench::exercise::solution_begins("ch02-nearest");
     [near, far].into_iter().find(|&t| t > t_min && t < t_max)
     // END EXERCISE
 }

@@ -35,7 +35,7 @@ pub fn triangle_by_plane(
     t_max: f32,
 ) -> Option<(f32, f32, f32)> {
     // EXERCISE(ch02-triangle): the lecture's two steps: where the ray meets the plane through the three corners (in (t_min, t_max)), then the hit point's barycentric coordinates (α, β); a hit only if 0 ≤ α, 0 ≤ β and α + β ≤ 1
-    crate::toolkit::exercise::solution_begins("ch02-triangle");
+    crate::workbench::exercise::solution_begins("ch02-triangle");
     let (e1, e2) = (p1 - p0, p2 - p0);
     let area_normal = e1.cross(e2); // N
     let (n, twice_area) = (area_normal.normalize(), area_normal.length());

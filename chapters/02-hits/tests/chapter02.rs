@@ -1,9 +1,9 @@
 //! Chapter 2: the three intersections, the closest hit, and the pictures.
 
-use ch02_hits::toolkit::compare::{Tolerance, compare};
 use ch02_hits::toolkit::scene::{Object, Shape};
-use ch02_hits::toolkit::snapshot::{assert_image, check, reference_path};
 use ch02_hits::toolkit::{Image, Scene, Vec3};
+use ch02_hits::workbench::compare::{Tolerance, compare};
+use ch02_hits::workbench::snapshot::{assert_image, check, reference_path};
 use ch02_hits::{
     CHAPTER, Ray, View, closest_hit, intersect, intersect_plane, intersect_sphere,
     intersect_triangle, render_hits, sphere_roots, sphere_roots_abc, triangle_by_plane,
@@ -598,7 +598,7 @@ fn snapshot_depth() {
 // The snapshot tolerance, checked on this chapter's own pictures: a real
 // mistake fails, a harmless last-bit change passes.
 
-fn verdict_against_default(changed: &Scene, view: View) -> ch02_hits::toolkit::compare::Verdict {
+fn verdict_against_default(changed: &Scene, view: View) -> ch02_hits::workbench::compare::Verdict {
     let expected = render(&scene(), view).to_rgb8();
     let actual = render(changed, view).to_rgb8();
     compare(&expected, &actual, Tolerance::for_size(160, 120))

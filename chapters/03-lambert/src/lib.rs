@@ -4,7 +4,9 @@ mod lights;
 
 pub mod ray_tree;
 
-pub use ch02_hits::{Camera, Hit, Ray, closest_hit, intersect, render, toolkit};
+pub use ch02_hits::{
+    Camera, Hit, Ray, closest_hit, intersect, render, scene_files, toolkit, workbench,
+};
 pub use lights::{Arrival, Incoming, arrival, spot_factor};
 
 use toolkit::scene::Material;
@@ -53,7 +55,7 @@ impl<'a> Surface<'a> {
 /// nothing, never a negative amount.
 pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
     // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light; nothing for light from behind
-    crate::toolkit::exercise::solution_begins("ch03-lambert");
+    crate::workbench::exercise::solution_begins("ch03-lambert");
     let cos_theta = surface.normal.dot(incoming.direction).max(0.0);
     surface.material.color * incoming.irradiance * cos_theta
     // END EXERCISE
@@ -82,7 +84,7 @@ pub fn direct_light(
     reflect: impl Fn(&Incoming) -> Color,
 ) -> Color {
     // EXERCISE(ch03-light-loop): the sum over the scene's lights (see `arrival`): ambient adds albedo × its colour; a light in front of the surface adds reflect(incoming) if visible, and visible is asked only when that light could add something
-    crate::toolkit::exercise::solution_begins("ch03-light-loop");
+    crate::workbench::exercise::solution_begins("ch03-light-loop");
     let mut color = Color::ZERO;
     for light in &scene.lights {
         match arrival(light, surface.hit.point) {
@@ -128,7 +130,7 @@ pub fn render_lambert(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats)
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).
-pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+pub const CHAPTER: workbench::cli::Chapter = workbench::cli::Chapter {
     package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
 };

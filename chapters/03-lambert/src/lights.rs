@@ -118,7 +118,7 @@ fn attenuation(falloff: Falloff, distance: f32) -> f32 {
 /// smooth step (3s² − 2s³) of the cosine in between, so the edge has no seam.
 pub fn spot_factor(axis: Vec3, inner_degrees: f32, outer_degrees: f32, ray: Vec3) -> f32 {
     // EXERCISE(ch03-spot): the cone's factor for this direction: 1 within inner degrees of the axis, 0 beyond outer, between them the smooth step of the cosine (README)
-    crate::toolkit::exercise::solution_begins("ch03-spot");
+    crate::workbench::exercise::solution_begins("ch03-spot");
     let cos_angle = axis.dot(ray);
     let cos_inner = inner_degrees.to_radians().cos();
     let cos_outer = outer_degrees.to_radians().cos();

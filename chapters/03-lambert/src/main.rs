@@ -1,6 +1,6 @@
 //! Renders a scene with Lambert shading: ambient, point and spot lights.
 
-use ch03_lambert::toolkit::cli::{RenderArgs, run_or_explain};
+use ch03_lambert::workbench::cli::{RenderArgs, run_or_explain};
 use ch03_lambert::{CHAPTER, ray_tree, render_lambert};
 use clap::Parser;
 

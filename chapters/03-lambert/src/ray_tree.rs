@@ -6,11 +6,11 @@
 
 pub use ch02_hits::ray_tree::{hit_node, primary_ray, ray_node, rgb};
 
-use crate::toolkit::cli::Pixel;
-use crate::toolkit::ray_tree::{
+use crate::toolkit::{Color, Scene};
+use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::{
     End, LightNode, LightStatus, RayKind, RayNode, ShadowNode, TracerInfo, light_kind,
 };
-use crate::toolkit::{Color, Scene};
 use crate::{Arrival, Incoming, Surface, arrival, closest_hit, lambert, trace};
 
 /// The highlight a chapter adds to a light's Lambert term (`None`: no highlights yet).

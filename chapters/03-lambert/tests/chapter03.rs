@@ -1,8 +1,9 @@
 //! Chapter 3: the cosine law, the spot cone, ambient light, and the picture.
 
+use ch03_lambert::scene_files;
 use ch03_lambert::toolkit::scene::Light;
-use ch03_lambert::toolkit::snapshot::assert_image;
 use ch03_lambert::toolkit::{Color, Image, Scene, Vec3};
+use ch03_lambert::workbench::snapshot::assert_image;
 use ch03_lambert::{
     CHAPTER, Camera, Incoming, Ray, Surface, always_visible, closest_hit, direct_light, lambert,
     render_lambert, spot_factor,
@@ -42,7 +43,7 @@ fn sphere_lit_at(degrees: f32) -> Scene {
         "#,
         light.x, light.y, light.z
     );
-    Scene::parse(&text, "cosine.toml").unwrap()
+    scene_files::parse(&text, "cosine.toml").unwrap()
 }
 
 #[test]
@@ -102,7 +103,7 @@ fn floor_facing(up: f32, lights: &str) -> (Scene, Ray) {
         {lights}
         "#
     );
-    let scene = Scene::parse(&text, "floor.toml").unwrap();
+    let scene = scene_files::parse(&text, "floor.toml").unwrap();
     (scene, Ray::new(Vec3::new(0.0, 5.0, 0.0), Vec3::NEG_Y))
 }
 

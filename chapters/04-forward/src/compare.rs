@@ -6,8 +6,8 @@ use rand_pcg::Pcg64Mcg;
 
 use std::time::Instant;
 
-use ch04_shadows::toolkit::compare::{rmse, rmse_clamped};
 use ch04_shadows::toolkit::{Color, Image, Scene, Stats};
+use ch04_shadows::workbench::compare::{rmse, rmse_clamped};
 use ch04_shadows::{Camera, Ray, ShadowStart, render_shadows, trace};
 
 use crate::film::{Forward, Settings, chunk_seed, trace_forward};

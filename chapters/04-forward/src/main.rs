@@ -1,6 +1,7 @@
 //! Idea 1 against Idea 2: traces a scene forward from its lights and
 //! compares the pictures with chapter 4's backward one.
 
+use ch04_shadows::scene_files;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -8,9 +9,9 @@ use std::time::Instant;
 use ch04_forward::{
     Run, Settings, backward_image, check_scene, expected_image, measure, rays_needed, strip,
 };
-use ch04_shadows::toolkit::cli::progress_bar;
-use ch04_shadows::toolkit::compare::{psnr, rmse_clamped};
 use ch04_shadows::toolkit::{Image, Scene};
+use ch04_shadows::workbench::cli::progress_bar;
+use ch04_shadows::workbench::compare::{psnr, rmse_clamped};
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 
@@ -133,11 +134,11 @@ fn run(args: &Args) -> Result<(), String> {
 fn load(args: &Args) -> Result<(Scene, String), String> {
     let (scene, name) = match &args.scene {
         Some(path) => (
-            Scene::load(path).map_err(|e| e.to_string())?,
+            scene_files::load(path).map_err(|e| e.to_string())?,
             path.display().to_string(),
         ),
         None => (
-            Scene::parse(DEFAULT_SCENE, DEFAULT_SCENE_PATH).map_err(|e| e.to_string())?,
+            scene_files::parse(DEFAULT_SCENE, DEFAULT_SCENE_PATH).map_err(|e| e.to_string())?,
             DEFAULT_SCENE_PATH.to_owned(),
         ),
     };

@@ -6,8 +6,9 @@ use ch04_forward::{
     Forward, Sensor, Settings, backward_image, check_scene, cosine_hemisphere, expected_image,
     trace_forward, uniform_sphere,
 };
-use ch04_shadows::toolkit::compare::{psnr, rmse, rmse_clamped};
+use ch04_shadows::scene_files;
 use ch04_shadows::toolkit::{Color, Image, Scene, Vec3};
+use ch04_shadows::workbench::compare::{psnr, rmse, rmse_clamped};
 use ch04_shadows::{CHAPTER, Camera};
 
 /// A close-up of a sphere on a floor under one point light, 8×6 pixels: the
@@ -43,7 +44,7 @@ fn close_up() -> Scene {
         radius = 0.4
         material = "red"
     "#;
-    Scene::parse(text, "close-up.toml").unwrap()
+    scene_files::parse(text, "close-up.toml").unwrap()
 }
 
 fn forward(scene: &Scene, rays: u64, aperture: f32) -> Forward {
@@ -207,7 +208,8 @@ fn photon_directions_have_the_right_distributions() {
 #[test]
 fn scenes_the_forward_tracer_cannot_match_are_refused() {
     assert!(check_scene(&close_up()).is_ok());
-    let scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/forward.toml")).unwrap();
+    let scene =
+        scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/forward.toml")).unwrap();
     assert!(check_scene(&scene).is_ok());
     let problems = check_scene(&CHAPTER.default_scene().unwrap()).unwrap_err();
     println!("{problems}");

@@ -6,7 +6,7 @@ pub mod ray_tree;
 
 pub use ch03_lambert::{
     Camera, Hit, Incoming, Ray, Surface, closest_hit, direct_light, intersect, lambert, render,
-    toolkit,
+    scene_files, toolkit, workbench,
 };
 pub use offset::offset_origin;
 
@@ -35,7 +35,7 @@ pub enum ShadowStart {
 /// from the hit point.
 pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -> (Ray, f32) {
     // EXERCISE(ch04-shadow-ray): the ray from the surface towards the light, starting where `origin` says, and the t at which it reaches the light
-    crate::toolkit::exercise::solution_begins("ch04-shadow-ray");
+    crate::workbench::exercise::solution_begins("ch04-shadow-ray");
     let point = surface.hit.point;
     let light = point + incoming.direction * incoming.distance;
     let start = match origin {
@@ -54,7 +54,7 @@ pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -
 /// `closest_hit`, the first blocker found is enough: we stop there.
 pub fn any_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
     // EXERCISE(ch04-any-hit): is some object that casts shadows hit for t in (t_min, t_max)? Stop at the first one found
-    crate::toolkit::exercise::solution_begins("ch04-any-hit");
+    crate::workbench::exercise::solution_begins("ch04-any-hit");
     objects
         .iter()
         .filter(|object| object.shadows)
@@ -94,7 +94,7 @@ pub fn light_is_free(
     stats: &mut Stats,
 ) -> bool {
     // EXERCISE(ch04-light-is-free): a light that casts no shadows is free without a ray; otherwise one shadow ray (counted in stats.shadow) decides whether anything stands between the surface and the light
-    crate::toolkit::exercise::solution_begins("ch04-light-is-free");
+    crate::workbench::exercise::solution_begins("ch04-light-is-free");
     if !incoming.casts_shadows {
         return true;
     }
@@ -150,7 +150,7 @@ pub fn render_shadows(
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).
-pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+pub const CHAPTER: workbench::cli::Chapter = workbench::cli::Chapter {
     package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
 };

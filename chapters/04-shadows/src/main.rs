@@ -1,6 +1,6 @@
 //! Renders a scene with Lambert shading and shadow rays.
 
-use ch04_shadows::toolkit::cli::{RenderArgs, run_or_explain};
+use ch04_shadows::workbench::cli::{RenderArgs, run_or_explain};
 use ch04_shadows::{CHAPTER, ShadowStart, ray_tree, render_shadows};
 use clap::Parser;
 

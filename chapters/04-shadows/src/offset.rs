@@ -27,7 +27,7 @@ use crate::toolkit::Vec3;
 /// proof.)
 pub fn offset_origin(hit: &Hit, towards: Vec3) -> Vec3 {
     // EXERCISE(ch04-offset): the hit point moved off the surface by its error bound, along the geometric normal, to the side that `towards` leaves by
-    crate::toolkit::exercise::solution_begins("ch04-offset");
+    crate::workbench::exercise::solution_begins("ch04-offset");
     let side = if hit.normal.dot(towards) < 0.0 {
         -1.0
     } else {

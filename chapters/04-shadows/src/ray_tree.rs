@@ -11,12 +11,12 @@ use std::sync::Mutex;
 
 pub use ch03_lambert::ray_tree::{hit_node, light_nodes, primary_ray, ray_node, rgb};
 
-use crate::toolkit::cli::Pixel;
-use crate::toolkit::ray_tree::{
-    End, ObjectRef, RayKind, RayNode, ShadowNode, TracerInfo, shape_name,
-};
 use crate::toolkit::scene::Object;
 use crate::toolkit::{Scene, Stats};
+use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::{
+    End, ObjectRef, RayKind, RayNode, ShadowNode, TracerInfo, shape_name,
+};
 use crate::{Hit, Incoming, Ray, ShadowStart, Surface, World, intersect, lambert, shade, trace};
 
 /// A question a tracer asked its world, with the answer it got.

@@ -1,9 +1,10 @@
 //! Chapter 4: shadow rays block what they should, and nothing else.
 
+use ch03_lambert::scene_files;
 use ch03_lambert::{Arrival, arrival};
 use ch04_shadows::toolkit::scene::{Light, Object, Shape};
-use ch04_shadows::toolkit::snapshot::assert_image;
 use ch04_shadows::toolkit::{Image, Scene, Stats, Vec3};
+use ch04_shadows::workbench::snapshot::assert_image;
 use ch04_shadows::{
     CHAPTER, Incoming, Ray, ShadowStart, Surface, any_hit, closest_hit, light_is_free,
     offset_origin, render_shadows, shadow_ray,
@@ -37,7 +38,7 @@ fn shadowed_pixels(scene: &Scene, origin: ShadowStart) -> usize {
 
 /// One of this chapter's scene files.
 fn scene_file(name: &str) -> Scene {
-    Scene::load(format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap()
+    scene_files::load(format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap()
 }
 
 /// A floor lit by a light 1° above its horizon, seen from above
@@ -263,7 +264,7 @@ fn floor_and_ceiling() -> Scene {
         offset = -4
         material = "white"
     "#;
-    Scene::parse(text, "floor-and-ceiling.toml").unwrap()
+    scene_files::parse(text, "floor-and-ceiling.toml").unwrap()
 }
 
 #[test]
@@ -320,7 +321,7 @@ fn a_blocker_just_before_the_light_casts_a_shadow() {
         radius = 0.2
         material = "white"
     "#;
-    let scene = Scene::parse(text, "ball-under-light.toml").unwrap();
+    let scene = scene_files::parse(text, "ball-under-light.toml").unwrap();
     let is_free = |x: f32| {
         let ray = Ray::new(Vec3::new(x, 1.0, 0.0), Vec3::NEG_Y);
         let (surface, incoming) = lit_point(&scene, &ray);

@@ -2,9 +2,9 @@
 
 use ch04_shadows::ShadowStart;
 use ch04_shadows::ray_tree::explain;
-use ch04_shadows::toolkit::Scene;
-use ch04_shadows::toolkit::cli::Pixel;
-use ch04_shadows::toolkit::ray_tree::{LightStatus, RayTree};
+use ch04_shadows::scene_files;
+use ch04_shadows::workbench::cli::Pixel;
+use ch04_shadows::workbench::ray_tree::{LightStatus, RayTree};
 
 /// The eye looks straight down at the origin, on a floor; a ball sits
 /// halfway between the origin and the light at (3, 4, 0), off the eye's ray.
@@ -42,7 +42,7 @@ material = "white"
 
 #[test]
 fn a_blocked_light_names_its_blocker() {
-    let scene = Scene::parse(BALL_IN_THE_WAY, "ball.toml").unwrap();
+    let scene = scene_files::parse(BALL_IN_THE_WAY, "ball.toml").unwrap();
     let (tracer, primary) = explain(&scene, Pixel { x: 1, y: 1 }, ShadowStart::Offset);
     let hit = primary.hit.as_ref().unwrap();
     assert_eq!((hit.object, hit.shape.as_str()), (0, "plane"));

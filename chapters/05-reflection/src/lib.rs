@@ -6,7 +6,7 @@ pub mod ray_tree;
 
 pub use ch04_shadows::{
     Camera, Hit, Incoming, Ray, ShadowStart, Surface, World, any_hit, closest_hit, lambert,
-    offset_origin, render, shade, toolkit,
+    offset_origin, render, scene_files, shade, toolkit, workbench,
 };
 pub use mirror::{highlight, mirror_ray, reflect};
 
@@ -128,7 +128,7 @@ pub fn trace(
     stats: &mut Stats,
 ) -> Color {
     // EXERCISE(ch05-trace): the background if the ray hits nothing (a path ended by no hit); else the hit's local light plus the light that its secondary rays bring back along this path
-    crate::toolkit::exercise::solution_begins("ch05-trace");
+    crate::workbench::exercise::solution_begins("ch05-trace");
     let Some(hit) = world.closest_hit(ray, 0.0, f32::INFINITY) else {
         stats.ended_no_hit += 1;
         return scene.image.background;
@@ -167,7 +167,7 @@ pub fn follow_secondary_rays(
     stats: &mut Stats,
 ) -> Color {
     // EXERCISE(ch05-recursion): the sum, over the secondary rays that the tracer lets go on one bounce deeper (with the path's weight times the ray's own), of the ray's weight times the colour seen along it; count each ray traced
-    crate::toolkit::exercise::solution_begins("ch05-recursion");
+    crate::workbench::exercise::solution_begins("ch05-recursion");
     let mut color = Color::ZERO;
     for secondary in secondary_rays.into_iter().flatten() {
         let next = Path {
@@ -208,7 +208,7 @@ pub fn render_mirrors(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats)
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).
-pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+pub const CHAPTER: workbench::cli::Chapter = workbench::cli::Chapter {
     package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
 };

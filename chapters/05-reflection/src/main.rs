@@ -1,6 +1,6 @@
 //! Renders a scene with mirrors, highlights, shadows and Lambert shading.
 
-use ch05_reflection::toolkit::cli::{RenderArgs, run_or_explain};
+use ch05_reflection::workbench::cli::{RenderArgs, run_or_explain};
 use ch05_reflection::{CHAPTER, ray_tree, render_mirrors};
 use clap::Parser;
 

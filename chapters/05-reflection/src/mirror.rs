@@ -10,7 +10,7 @@ use crate::{Incoming, Ray, Secondary, SecondaryKind, Surface, offset_origin};
 /// out equals the angle in, and |d_o| = |d_i|.
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
     // EXERCISE(ch05-reflect): the mirror direction of d about n: the part of d along n reversed, the part across n kept
-    crate::toolkit::exercise::solution_begins("ch05-reflect");
+    crate::workbench::exercise::solution_begins("ch05-reflect");
     d - 2.0 * d.dot(n) * n
     // END EXERCISE
 }
@@ -27,7 +27,7 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
 /// material's reflectance, chapter 6's adds what glass reflects.
 pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Secondary> {
     // EXERCISE(ch05-mirror-ray): none for a zero weight; else a reflection carrying `weight`, in the mirror direction of the incoming ray, starting just off the surface on the side it leaves to
-    crate::toolkit::exercise::solution_begins("ch05-mirror-ray");
+    crate::workbench::exercise::solution_begins("ch05-mirror-ray");
     if weight == Color::ZERO {
         return None;
     }
@@ -49,7 +49,7 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
 /// has no size; the highlight puts the light's reflection back in.
 pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
     // EXERCISE(ch05-highlight): Blinn–Phong: the specular weight times the light's irradiance times the cosine between the normal and the unit halfway vector of the directions to the light and to the eye, raised to the shininess
-    crate::toolkit::exercise::solution_begins("ch05-highlight");
+    crate::workbench::exercise::solution_begins("ch05-highlight");
     let material = surface.material;
     if material.specular == 0.0 {
         return Color::ZERO;

@@ -15,9 +15,9 @@ pub use ch04_shadows::ray_tree::{
     Query, Recorder, Sink, hit_node, light_nodes, primary_ray, ray_node, rgb, shadow_towards,
 };
 
-use crate::toolkit::cli::Pixel;
-use crate::toolkit::ray_tree::{End, RayKind, RayNode, RefractionNode, TracerInfo};
 use crate::toolkit::{Color, Scene, Stats};
+use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::{End, RayKind, RayNode, RefractionNode, TracerInfo};
 use crate::{
     Mirrors, Path, Ray, Secondary, SecondaryKind, Surface, Whitted, World, highlight, trace,
 };

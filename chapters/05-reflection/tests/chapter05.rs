@@ -2,10 +2,11 @@
 //! (against a tracer whose answers the test fixes, and in two facing mirrors
 //! whose pixels are known exactly), and the pictures.
 
+use ch05_reflection::scene_files;
 use std::sync::Mutex;
 
-use ch05_reflection::toolkit::snapshot::assert_image;
 use ch05_reflection::toolkit::{Color, Image, Scene, Stats, Vec3};
+use ch05_reflection::workbench::snapshot::assert_image;
 use ch05_reflection::{
     CHAPTER, Incoming, Path, Ray, Secondary, SecondaryKind, Surface, Whitted, World, closest_hit,
     follow_secondary_rays, highlight, mirror_ray, reflect, render_mirrors, trace,
@@ -42,7 +43,7 @@ material = "floor"
 "#;
 
 fn floor() -> Scene {
-    Scene::parse(FLOOR, "floor.toml").unwrap()
+    scene_files::parse(FLOOR, "floor.toml").unwrap()
 }
 
 /// The point of the floor every test ray aims at: away from the origin, so
@@ -532,7 +533,7 @@ fn render(scene: &Scene) -> (Image, Stats) {
 #[test]
 fn max_depth_n_follows_exactly_n_bounces() {
     for max_depth in 0..=3 {
-        let mut scene = Scene::parse(FACING, "facing.toml").unwrap();
+        let mut scene = scene_files::parse(FACING, "facing.toml").unwrap();
         scene.trace.max_depth = max_depth;
         let (image, stats) = render(&scene);
         let expected = after(max_depth);
@@ -571,7 +572,7 @@ fn no_reflectance_no_reflection_ray() {
 }
 
 fn corridor() -> Scene {
-    Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/corridor.toml")).unwrap()
+    scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/corridor.toml")).unwrap()
 }
 
 #[test]

@@ -6,8 +6,8 @@ pub mod ray_tree;
 
 pub use ch05_reflection::{
     Camera, Hit, Mirrors, Path, Ray, Secondary, SecondaryKind, ShadowStart, Surface, Whitted,
-    World, closest_hit, lambert, mirror_ray, offset_origin, reflect, render, render_whitted, shade,
-    toolkit, trace,
+    World, closest_hit, lambert, mirror_ray, offset_origin, reflect, render, render_whitted,
+    scene_files, shade, toolkit, trace, workbench,
 };
 pub use snell::{refract, schlick};
 
@@ -42,7 +42,7 @@ pub struct Split {
 ///    refracted ray T·(1 − R). So the two shares add up to T.
 pub fn split(surface: &Surface, incoming: &Ray) -> Split {
     // EXERCISE(ch06-split): entering or leaving (from the outward normal), the indices on either side, Snell's refracted direction; on total internal reflection everything transmitted is reflected, else the transmitted weight is shared by the Fresnel term (if the material asks for it) between the mirror ray and the refracted one
-    crate::toolkit::exercise::solution_begins("ch06-split");
+    crate::workbench::exercise::solution_begins("ch06-split");
     let material = surface.material;
     let transparency = Color::splat(material.transparency);
     let d = incoming.direction;
@@ -124,7 +124,7 @@ pub fn render_glass(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).
-pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+pub const CHAPTER: workbench::cli::Chapter = workbench::cli::Chapter {
     package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
 };

@@ -1,6 +1,6 @@
 //! Renders a scene with glass: refraction, total internal reflection, Fresnel.
 
-use ch06_refraction::toolkit::cli::{RenderArgs, run_or_explain};
+use ch06_refraction::workbench::cli::{RenderArgs, run_or_explain};
 use ch06_refraction::{CHAPTER, ray_tree, render_glass};
 use clap::Parser;
 

@@ -5,9 +5,9 @@
 
 pub use ch05_reflection::ray_tree::{explain_with, rgb};
 
-use crate::toolkit::cli::Pixel;
-use crate::toolkit::ray_tree::{RayNode, RefractionNode, TracerInfo};
 use crate::toolkit::{Color, Scene};
+use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::{RayNode, RefractionNode, TracerInfo};
 use crate::{Glass, Mirrors, Ray, Surface, refract, schlick, split};
 
 /// How `surface` splits the light of `incoming` between the mirror ray and

@@ -19,7 +19,7 @@ use crate::toolkit::Vec3;
 /// Otherwise d' = η (d + cos θ₁ N) − cos θ₂ N = η d + (η cos θ₁ − cos θ₂) N.
 pub fn refract(d: Vec3, normal: Vec3, eta: f32) -> Option<Vec3> {
     // EXERCISE(ch06-refract): Snell's law in vector form: the refracted unit direction, or None on total internal reflection
-    crate::toolkit::exercise::solution_begins("ch06-refract");
+    crate::workbench::exercise::solution_begins("ch06-refract");
     let cos_in = (-normal.dot(d)).min(1.0);
     let sin2_out = eta * eta * (1.0 - cos_in * cos_in);
     if sin2_out > 1.0 {
@@ -45,7 +45,7 @@ pub fn refract(d: Vec3, normal: Vec3, eta: f32) -> Option<Vec3> {
 /// seen edge-on.
 pub fn schlick(cos_theta: f32, n1: f32, n2: f32) -> f32 {
     // EXERCISE(ch06-schlick): Schlick's approximation of the share reflected: R₀ head-on (from the two indices), rising to 1 at grazing incidence; a cosine outside [0, 1] counts as the nearest end
-    crate::toolkit::exercise::solution_begins("ch06-schlick");
+    crate::workbench::exercise::solution_begins("ch06-schlick");
     let r0 = ((n1 - n2) / (n1 + n2)).powi(2);
     r0 + (1.0 - r0) * (1.0 - cos_theta.clamp(0.0, 1.0)).powi(5)
     // END EXERCISE

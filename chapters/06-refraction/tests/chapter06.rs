@@ -2,10 +2,11 @@
 //! Schlick's Fresnel term, the split at a glass surface (entering and
 //! leaving, the weights), and the pictures.
 
-use ch06_refraction::toolkit::compare::{Tolerance, compare};
+use ch06_refraction::scene_files;
 use ch06_refraction::toolkit::scene::{Material, Object, Shape};
-use ch06_refraction::toolkit::snapshot::assert_image;
 use ch06_refraction::toolkit::{Color, Scene, Vec3};
+use ch06_refraction::workbench::compare::{Tolerance, compare};
+use ch06_refraction::workbench::snapshot::assert_image;
 use ch06_refraction::{
     CHAPTER, Ray, Split, Surface, closest_hit, refract, render_glass, schlick, split,
 };
@@ -161,7 +162,7 @@ material = "glass"
 "#;
 
 fn glass_floor(fresnel: bool) -> Scene {
-    let mut scene = Scene::parse(GLASS_FLOOR, "glass-floor.toml").unwrap();
+    let mut scene = scene_files::parse(GLASS_FLOOR, "glass-floor.toml").unwrap();
     scene.materials[0].fresnel = fresnel;
     scene
 }
@@ -356,7 +357,7 @@ fn an_air_bubble_in_glass_reflects_totally_beyond_41_81_degrees() {
 /// transparent, no shadow.
 #[test]
 fn a_sphere_of_ior_1_and_transparency_1_changes_nothing() {
-    let without = Scene::load(concat!(
+    let without = scene_files::load(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/../04-shadows/scenes/default.toml"
     ))
@@ -390,7 +391,7 @@ fn a_sphere_of_ior_1_and_transparency_1_changes_nothing() {
 
 #[test]
 fn opaque_materials_spawn_no_refraction_ray() {
-    let scene = Scene::load(concat!(
+    let scene = scene_files::load(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/../05-reflection/scenes/default.toml"
     ))
@@ -409,7 +410,7 @@ fn snapshot_default() {
 
 #[test]
 fn snapshot_bubble() {
-    let scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/bubble.toml"))
+    let scene = scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/bubble.toml"))
         .unwrap()
         .with_size(160, 120);
     assert_image("06-refraction", "bubble", &render_glass(&scene, || {}).0);

@@ -5,7 +5,7 @@ pub mod ray_tree;
 pub use ch06_refraction::{
     Camera, Glass, Hit, Mirrors, Path, Ray, Secondary, SecondaryKind, ShadowStart, Surface,
     Whitted, World, closest_hit, lambert, offset_origin, reflect, refract, render, render_whitted,
-    schlick, shade, toolkit, trace,
+    scene_files, schlick, shade, toolkit, trace, workbench,
 };
 
 use toolkit::{Color, Image, Scene, Stats};
@@ -49,7 +49,7 @@ impl Termination {
 /// equal to `min_weight` is not below it.
 pub fn below_threshold(weight: Color, min_weight: f32) -> bool {
     // EXERCISE(ch07-below-threshold): whether no channel of the weight reaches min_weight
-    crate::toolkit::exercise::solution_begins("ch07-below-threshold");
+    crate::workbench::exercise::solution_begins("ch07-below-threshold");
     weight.max_element() < min_weight
     // END EXERCISE
 }
@@ -77,7 +77,7 @@ impl Whitted for Tracer {
     /// first.
     fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
         // EXERCISE(ch07-may-trace): a ray may go on unless its depth is beyond max_depth or its path's weight is below the threshold; count each path ended by the criterion that ended it (the depth first)
-        crate::toolkit::exercise::solution_begins("ch07-may-trace");
+        crate::workbench::exercise::solution_begins("ch07-may-trace");
         if depth > self.termination.max_depth {
             stats.ended_max_depth += 1;
             false
@@ -101,7 +101,7 @@ pub fn render_terminated(
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).
-pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+pub const CHAPTER: workbench::cli::Chapter = workbench::cli::Chapter {
     package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
 };

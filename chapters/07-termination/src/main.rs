@@ -1,7 +1,7 @@
 //! Renders a scene with the complete tracer and explicit termination criteria.
 
 use ch07_termination::toolkit::Scene;
-use ch07_termination::toolkit::cli::{RenderArgs, run_or_explain};
+use ch07_termination::workbench::cli::{RenderArgs, run_or_explain};
 use ch07_termination::{CHAPTER, Termination, ray_tree, render_terminated};
 use clap::Parser;
 

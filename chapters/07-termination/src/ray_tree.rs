@@ -5,8 +5,8 @@
 pub use ch06_refraction::ray_tree::{explain_split, explain_with};
 
 use crate::toolkit::Scene;
-use crate::toolkit::cli::Pixel;
-use crate::toolkit::ray_tree::{RayNode, TracerInfo};
+use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::{RayNode, TracerInfo};
 use crate::{Termination, Tracer, World};
 
 /// What the complete tracer does, with these criteria.

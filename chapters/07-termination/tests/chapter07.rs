@@ -1,8 +1,9 @@
 //! Chapter 7: each criterion ends the paths it should, and the statistics
 //! count them.
 
-use ch07_termination::toolkit::snapshot::assert_image;
+use ch07_termination::scene_files;
 use ch07_termination::toolkit::{Color, Scene, Vec3};
+use ch07_termination::workbench::snapshot::assert_image;
 use ch07_termination::{
     CHAPTER, Glass, Mirrors, Termination, below_threshold, render_terminated, render_whitted,
 };
@@ -13,7 +14,7 @@ fn mirrors(reflectance: f32) -> Scene {
 
 /// Two facing mirrors of `reflectance` (per channel): every ray hits one.
 fn mirrors_of(reflectance: Color) -> Scene {
-    let mut scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mirrors.toml"))
+    let mut scene = scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mirrors.toml"))
         .unwrap()
         .with_size(40, 30);
     scene.materials[0].reflectance = reflectance;
@@ -147,7 +148,7 @@ fn a_path_ends_by_weight_only_when_every_channel_is_below_the_threshold() {
 /// have brought back a floodlit wall of colour up to 400.
 #[test]
 fn a_path_below_the_threshold_can_change_a_pixel_by_more_than_the_threshold() {
-    let scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/floodlit.toml"))
+    let scene = scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/floodlit.toml"))
         .unwrap()
         .with_size(40, 30);
     let criteria = Termination::of(&scene);

@@ -8,7 +8,8 @@ pub mod ray_tree;
 pub use aabb::{Aabb, bounds};
 pub use ch02_hits::{hit_at, intersect};
 pub use ch07_termination::{
-    Camera, Hit, Ray, Termination, Tracer, World, closest_hit, render, render_whitted, toolkit,
+    Camera, Hit, Ray, Termination, Tracer, World, closest_hit, render, render_whitted, scene_files,
+    toolkit, workbench,
 };
 
 use build::Node;
@@ -278,7 +279,7 @@ pub fn render_bvh(
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).
-pub const CHAPTER: toolkit::cli::Chapter = toolkit::cli::Chapter {
+pub const CHAPTER: workbench::cli::Chapter = workbench::cli::Chapter {
     package: env!("CARGO_PKG_NAME"),
     default_scene: include_str!("../scenes/default.toml"),
 };

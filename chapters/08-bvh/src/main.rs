@@ -3,7 +3,7 @@
 use std::time::Instant;
 
 use ch08_bvh::toolkit::Scene;
-use ch08_bvh::toolkit::cli::{RenderArgs, run_or_explain};
+use ch08_bvh::workbench::cli::{RenderArgs, run_or_explain};
 use ch08_bvh::{Bvh, CHAPTER, Termination, Tracer, ray_tree, render_whitted};
 use clap::Parser;
 

@@ -6,8 +6,8 @@
 use ch07_termination::ray_tree::explain_against;
 
 use crate::toolkit::Scene;
-use crate::toolkit::cli::Pixel;
-use crate::toolkit::ray_tree::{RayNode, TracerInfo};
+use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::{RayNode, TracerInfo};
 use crate::{Bvh, Termination};
 
 /// Chapter 8's tree: the complete tracer against a BVH of the scene.

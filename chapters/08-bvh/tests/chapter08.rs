@@ -1,17 +1,18 @@
 //! Chapter 8: the BVH gives the same pictures as brute force, faster.
 
+use ch08_bvh::scene_files;
 use std::path::PathBuf;
 
-use ch08_bvh::toolkit::cli::with_threads;
 use ch08_bvh::toolkit::scene::{Object, Shape};
-use ch08_bvh::toolkit::snapshot::{assert_image, workspace_root};
 use ch08_bvh::toolkit::{Image, Scene, Stats, Vec3};
+use ch08_bvh::workbench::cli::with_threads;
+use ch08_bvh::workbench::snapshot::{assert_image, workspace_root};
 use ch08_bvh::{Bvh, CHAPTER, Ray, Termination, Tracer, World, render_bvh, render_whitted};
 use proptest::prelude::*;
 
 /// Every chapter's scene files, the first chapter first.
 fn chapter_scenes() -> Vec<PathBuf> {
-    ch08_bvh::toolkit::chapters::scene_files(&workspace_root())
+    ch08_bvh::workbench::chapters::scene_files(&workspace_root())
 }
 
 /// Chapter 7's tracer against `world`.
@@ -25,7 +26,7 @@ fn bvh_and_brute_force_give_the_same_picture_on_every_chapter_scene() {
     let scenes = chapter_scenes();
     assert!(scenes.len() >= 12, "found {scenes:?}");
     for path in scenes {
-        let scene = Scene::load(&path).unwrap().with_size(80, 60);
+        let scene = scene_files::load(&path).unwrap().with_size(80, 60);
         let bvh = Bvh::build(&scene.objects);
         let brute = render_against(&scene, &scene.objects[..]);
         let fast = render_against(&scene, &bvh);
@@ -169,7 +170,8 @@ proptest! {
 
 #[test]
 fn an_obj_mesh_becomes_smooth_triangles() {
-    let scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mesh.toml")).unwrap();
+    let scene =
+        scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mesh.toml")).unwrap();
     let smooth = scene
         .objects
         .iter()
@@ -185,7 +187,7 @@ fn an_obj_mesh_becomes_smooth_triangles() {
 
 #[test]
 fn snapshot_mesh() {
-    let scene = Scene::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mesh.toml"))
+    let scene = scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mesh.toml"))
         .unwrap()
         .with_size(160, 120);
     let image = render_bvh(&scene, Termination::of(&scene), || {}).0;

@@ -1,8 +1,8 @@
 //! Through the BVH, a pixel's ray tree is the same as chapter 7's.
 
 use ch08_bvh::Termination;
-use ch08_bvh::toolkit::Scene;
-use ch08_bvh::toolkit::cli::Pixel;
+use ch08_bvh::scene_files;
+use ch08_bvh::workbench::cli::Pixel;
 
 #[test]
 fn the_tree_through_the_bvh_is_chapter_7s() {
@@ -10,7 +10,7 @@ fn the_tree_through_the_bvh_is_chapter_7s() {
         env!("CARGO_MANIFEST_DIR"),
         "/../06-refraction/scenes/default.toml"
     );
-    let scene = Scene::load(glass).unwrap();
+    let scene = scene_files::load(glass).unwrap();
     let termination = Termination::of(&scene);
     for (x, y) in [(160, 110), (60, 200), (250, 150)] {
         let pixel = Pixel { x, y };

@@ -1,28 +1,15 @@
 //! The scene: what a scene file describes, checked and ready to render.
 //!
-//! Every chapter reads the same format (see `file/` for the TOML side); the
-//! `nff` module reads the SPD scenes' format into the same [`Scene`], and
-//! `mesh.rs` the OBJ files a TOML scene may name. Both formats check with
-//! one set of rules (`rules.rs`). A chapter that cannot simulate something
-//! yet still reads it; it simply does not use it. Everything here has been
-//! validated: finite numbers, unit normals, positive radii, triangles with
-//! area, known material names.
+//! The `scene-files` crate (`crates/scene-files`) reads TOML scene files,
+//! the SPD scenes' NFF and OBJ meshes into this [`Scene`]. A chapter that
+//! cannot simulate something yet still reads it; it simply does not use
+//! it. Everything here has been validated: finite numbers, unit normals,
+//! positive radii, triangles with area, known material names.
 
 mod effects;
-mod error;
-mod file;
-mod mesh;
-pub mod nff;
-mod rules;
-
-use std::path::Path;
-
-pub use rules::{MAX_IMAGE_SIDE, is_square_sample_count};
 
 use crate::Vec3;
 pub use effects::Effects;
-pub use error::SceneError;
-pub use file::{BYTES_PER_OBJECT, MemoryLimit, write_sphere_cloud};
 
 use crate::Color;
 
@@ -209,47 +196,6 @@ pub enum Shape {
 }
 
 impl Scene {
-    /// Reads and validates a scene file.
-    ///
-    /// A file larger than the memory the machine has is refused before it
-    /// is read, and one whose scene would need more before its objects are
-    /// parsed (see [`Scene::parse_within`]).
-    pub fn load(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
-        Scene::load_within(path, MemoryLimit::of_machine().as_ref())
-    }
-
-    /// [`Scene::load`] within `limit`; `None` checks nothing.
-    pub fn load_within(
-        path: impl AsRef<Path>,
-        limit: Option<&MemoryLimit>,
-    ) -> Result<Scene, SceneError> {
-        let path = path.as_ref();
-        let name = path.display().to_string();
-        let io = |e| SceneError::io(&name, &e);
-        let bytes = std::fs::metadata(path).map_err(io)?.len();
-        file::check_file_size(&name, bytes, limit)?;
-        let text = std::fs::read_to_string(path).map_err(io)?;
-        Scene::parse_within(&text, &name, limit)
-    }
-
-    /// Parses and validates scene text; `file_name` is used in error messages.
-    /// A scene that would need more memory than the machine has is refused
-    /// before its objects are parsed (see [`Scene::parse_within`]).
-    pub fn parse(text: &str, file_name: &str) -> Result<Scene, SceneError> {
-        Scene::parse_within(text, file_name, MemoryLimit::of_machine().as_ref())
-    }
-
-    /// [`Scene::parse`], refusing a scene whose estimated memory (about
-    /// [`BYTES_PER_OBJECT`] per object) is more than `limit`; `None` checks
-    /// nothing.
-    pub fn parse_within(
-        text: &str,
-        file_name: &str,
-        limit: Option<&MemoryLimit>,
-    ) -> Result<Scene, SceneError> {
-        file::parse(text, file_name, limit)
-    }
-
     /// The material of an object.
     pub fn material(&self, object: &Object) -> &Material {
         &self.materials[object.material]

@@ -1,0 +1,81 @@
+//! Reads scene files into the toolkit's checked [`Scene`]: the workbook's
+//! TOML format (`file/`: its serde records, its self-checking values and
+//! their validation into a scene), the SPD scenes' NFF (`nff/`) and the OBJ
+//! meshes a TOML scene may name (`mesh.rs`). Both formats check with one
+//! set of rules (`rules.rs`), and every error names the file, the line, the
+//! field and what would be valid (`error.rs`). Scenes of millions of
+//! objects are read in parts (`file/outline.rs`, `file/parts.rs`), and a
+//! scene too large for the machine is refused before it is read
+//! (`file/memory.rs`).
+//!
+//! ```
+//! let scene = scene_files::parse(r#"
+//!     [camera]
+//!     eye = [0, 0, 5]
+//!     look_at = [0, 0, 0]
+//!     up = [0, 1, 0]
+//!     vfov = 45
+//!     [image]
+//!     width = 4
+//!     height = 2
+//! "#, "tiny.toml").unwrap();
+//! assert_eq!(scene.image.width, 4);
+//! ```
+
+mod error;
+mod file;
+mod mesh;
+pub mod nff;
+mod rules;
+
+use std::path::Path;
+
+pub use error::SceneError;
+pub use file::{BYTES_PER_OBJECT, MemoryLimit, write_sphere_cloud};
+pub use rules::{MAX_IMAGE_SIDE, is_square_sample_count};
+
+// The scene model the readers fill in, named here as the readers' modules
+// name it (`super::Shape`, `crate::Scene`).
+pub use ch00_toolkit::scene::*;
+use ch00_toolkit::{Color, Vec3};
+
+/// Reads and validates a scene file.
+///
+/// A file larger than the memory the machine has is refused before it
+/// is read, and one whose scene would need more before its objects are
+/// parsed (see [`parse_within`]).
+pub fn load(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
+    load_within(path, MemoryLimit::of_machine().as_ref())
+}
+
+/// [`load`] within `limit`; `None` checks nothing.
+pub fn load_within(
+    path: impl AsRef<Path>,
+    limit: Option<&MemoryLimit>,
+) -> Result<Scene, SceneError> {
+    let path = path.as_ref();
+    let name = path.display().to_string();
+    let io = |e| SceneError::io(&name, &e);
+    let bytes = std::fs::metadata(path).map_err(io)?.len();
+    file::check_file_size(&name, bytes, limit)?;
+    let text = std::fs::read_to_string(path).map_err(io)?;
+    parse_within(&text, &name, limit)
+}
+
+/// Parses and validates scene text; `file_name` is used in error messages.
+/// A scene that would need more memory than the machine has is refused
+/// before its objects are parsed (see [`parse_within`]).
+pub fn parse(text: &str, file_name: &str) -> Result<Scene, SceneError> {
+    parse_within(text, file_name, MemoryLimit::of_machine().as_ref())
+}
+
+/// [`parse`], refusing a scene whose estimated memory (about
+/// [`BYTES_PER_OBJECT`] per object) is more than `limit`; `None` checks
+/// nothing.
+pub fn parse_within(
+    text: &str,
+    file_name: &str,
+    limit: Option<&MemoryLimit>,
+) -> Result<Scene, SceneError> {
+    file::parse(text, file_name, limit)
+}

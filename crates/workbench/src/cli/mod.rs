@@ -1,0 +1,400 @@
+//! The command line every chapter binary shares: parse, load, render, write, report.
+//!
+//! A chapter's `main.rs` names its chapter and its render function and hands
+//! both to [`run`]; everything a student's binary needs besides the lesson
+//! (arguments, errors, progress, atomic output, statistics) lives here.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+
+use crate::chapters::{self, ChapterEntry};
+use crate::ray_tree::{RayNode, TracerInfo};
+use ch00_toolkit::{Image, Scene, Stats};
+use scene_files::SceneError;
+use scene_files::{Effect, Effects};
+
+mod pixel;
+
+pub use pixel::Pixel;
+use pixel::{explain_pixel, pixel};
+
+/// A chapter binary: which chapter it is, and its default scene.
+///
+/// Everything else about the chapter (folder, title, the effects it can
+/// simulate) comes from the list of chapters, `chapters/chapters.toml`.
+#[derive(Debug, Clone, Copy)]
+pub struct Chapter {
+    /// Its package, such as `ch02-hits`: `env!("CARGO_PKG_NAME")`.
+    pub package: &'static str,
+    /// Its default scene's text, `scenes/default.toml` (built into the binary).
+    pub default_scene: &'static str,
+}
+
+impl Chapter {
+    /// Its entry in `chapters/chapters.toml`.
+    pub fn entry(&self) -> &'static ChapterEntry {
+        chapters::find(self.package)
+            .unwrap_or_else(|| panic!("{} is not in chapters/chapters.toml", self.package))
+    }
+
+    /// The effects its tracer can simulate.
+    pub fn effects(&self) -> Effects {
+        self.entry().effects()
+    }
+
+    /// Parses the chapter's default scene.
+    pub fn default_scene(&self) -> Result<Scene, SceneError> {
+        scene_files::parse(self.default_scene, &self.entry().default_scene_path())
+    }
+}
+
+/// Arguments every chapter binary takes.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct RenderArgs {
+    /// Scene file to render: TOML (see the chapter's scenes/ folder), or
+    /// NFF (the SPD scenes' format) if its name ends in .nff. Without it,
+    /// the chapter's default scene.
+    pub scene: Option<PathBuf>,
+
+    /// Where to write the PNG. Default: <chapter>.png in the current
+    /// directory for the default scene, <scene name>.png for a scene file.
+    #[arg(short, long, value_name = "OUT.png")]
+    pub output: Option<PathBuf>,
+
+    /// Image width in pixels, instead of the scene's [image] width.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=scene_files::MAX_IMAGE_SIDE as i64))]
+    pub width: Option<u32>,
+
+    /// Image height in pixels, instead of the scene's [image] height.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=scene_files::MAX_IMAGE_SIDE as i64))]
+    pub height: Option<u32>,
+
+    /// Rays per pixel, instead of the scene's [image] samples: a square
+    /// number (1, 4, 9, 16, ...); more rays smooth the jagged edges.
+    #[arg(long, value_parser = samples)]
+    pub samples: Option<u32>,
+
+    /// No progress bar.
+    #[arg(short, long)]
+    pub quiet: bool,
+
+    /// Switch an effect off for a fast preview (repeat for more).
+    #[arg(long, value_enum, value_name = "EFFECT")]
+    pub without: Vec<Effect>,
+
+    /// Refuse a scene that calls for an effect this chapter cannot simulate
+    /// yet, instead of rendering what it can.
+    #[arg(long)]
+    pub strict: bool,
+
+    /// Number of threads to render with (default: one per core). The
+    /// picture is the same bytes whatever the number.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
+
+    /// Instead of rendering, print the rays of the pixel X,Y (counted from
+    /// 0,0 at the top-left corner) as a tree, as this chapter traces them:
+    /// each ray's kind, origin and direction; what it hits (object, t,
+    /// point, normal, front or back); what each light adds and whether a
+    /// shadow ray finds it blocked; the secondary rays with their weights;
+    /// the colour each ray brings back; and why each path ends. It follows
+    /// one ray through the pixel's centre, whatever the samples, and writes
+    /// no PNG.
+    #[arg(long, value_name = "X,Y", value_parser = pixel)]
+    pub pixel: Option<Pixel>,
+
+    /// With --pixel: write the tree as JSON instead of text, to compare with
+    /// your own tracer's (the README's "A pixel's ray tree" has the schema).
+    #[arg(long, requires = "pixel")]
+    pub json: bool,
+}
+
+impl RenderArgs {
+    /// The scene to render and a name for it: the scene file (TOML, or NFF
+    /// when its name ends in `.nff`) or else the chapter's default scene,
+    /// with the size and sample overrides applied.
+    pub fn load_scene(&self, chapter: &Chapter) -> Result<(Scene, String), SceneError> {
+        use scene_files::nff;
+        let (scene, name) = match &self.scene {
+            Some(path) if nff::is_nff(path) => (nff::load(path)?, path.display().to_string()),
+            Some(path) => (scene_files::load(path)?, path.display().to_string()),
+            None => (
+                chapter.default_scene()?,
+                chapter.entry().default_scene_path(),
+            ),
+        };
+        let width = self.width.unwrap_or(scene.image.width);
+        let height = self.height.unwrap_or(scene.image.height);
+        let mut scene = scene.with_size(width, height);
+        scene.image.samples = self.samples.unwrap_or(scene.image.samples);
+        Ok((scene, name))
+    }
+
+    /// Where the picture goes.
+    pub fn output_path(&self, chapter: &Chapter) -> PathBuf {
+        if let Some(output) = &self.output {
+            return output.clone();
+        }
+        let stem = match &self.scene {
+            Some(path) => path
+                .file_stem()
+                .map_or("render".into(), |s| s.to_string_lossy().into_owned()),
+            None => chapter.entry().folder.clone(),
+        };
+        PathBuf::from(format!("{stem}.png"))
+    }
+}
+
+/// Which effects a chapter simulates for a scene, and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct EffectPlan {
+    /// What the scene needs (see [`Scene::calls_for`]).
+    pub calls_for: Effects,
+    /// What the scene's `[trace] effects` and `--without` leave on.
+    pub switched_on: Effects,
+    /// What will be simulated: called for, switched on and known to the chapter.
+    pub simulated: Effects,
+    /// Called for and switched on, but introduced by a later chapter.
+    pub later: Effects,
+}
+
+impl EffectPlan {
+    pub fn new(chapter: &Chapter, scene: &Scene, without: &[Effect]) -> EffectPlan {
+        let calls_for = scene.calls_for();
+        let switched_on = scene.switched_on().minus(Effects::of(without));
+        let wanted = calls_for.and(switched_on);
+        EffectPlan {
+            calls_for,
+            switched_on,
+            simulated: wanted.and(chapter.effects()),
+            later: wanted.minus(chapter.effects()),
+        }
+    }
+
+    /// The scene to render: the effects the chapter knows but that are
+    /// switched off are taken out of it, so nothing is computed for them.
+    pub fn apply(&self, chapter: &Chapter, scene: Scene) -> Scene {
+        scene.without(chapter.effects().minus(self.switched_on))
+    }
+
+    /// One line for each effect called for but left to a later chapter.
+    pub fn notes(&self) -> Vec<String> {
+        self.later
+            .iter()
+            .map(|effect| {
+                let chapter = chapters::introducing(effect);
+                format!(
+                    "this scene calls for {effect}, introduced in chapter {} ({})",
+                    chapter.number(),
+                    chapter.path().display()
+                )
+            })
+            .collect()
+    }
+}
+
+impl std::fmt::Display for EffectPlan {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "effects called for: {}; simulated: {}",
+            self.calls_for, self.simulated
+        )?;
+        let off = self.calls_for.minus(self.switched_on);
+        if !off.is_empty() {
+            write!(f, " (switched off: {off})")?;
+        }
+        Ok(())
+    }
+}
+
+/// Parses `--samples`: a square number from 1 to 1024.
+fn samples(text: &str) -> Result<u32, String> {
+    match text.parse::<u32>() {
+        Ok(n) if scene_files::is_square_sample_count(n) => Ok(n),
+        _ => Err(format!(
+            "expected a square number from 1 to 1024 (1, 4, 9, 16, ...), found {text:?}"
+        )),
+    }
+}
+
+/// A progress bar over the rows of a render; hidden when `quiet` (and by
+/// indicatif itself when the output is not a terminal).
+pub fn progress_bar(rows: u32, quiet: bool) -> ProgressBar {
+    if quiet {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(rows as u64);
+    let style =
+        ProgressStyle::with_template("{spinner} rendering [{bar:40}] {pos}/{len} rows, {eta} left")
+            .expect("a valid template")
+            .progress_chars("=> ");
+    bar.set_style(style);
+    bar
+}
+
+/// What a render made.
+pub struct Rendered {
+    pub image: Image,
+    pub stats: Stats,
+    pub seconds: Duration,
+}
+
+/// Loads the scene, renders it with `render`, writes the PNG and reports.
+/// `render(scene, on_row)` must call `on_row` once per finished row.
+pub fn run(
+    chapter: &Chapter,
+    args: &RenderArgs,
+    render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
+) -> ExitCode {
+    end_quietly_when_output_closes();
+    if args.pixel.is_some() {
+        eprintln!(
+            "error: this binary prints no ray trees; every chapter's binary does, e.g. cargo run -p ch07-termination -- --pixel X,Y"
+        );
+        return ExitCode::FAILURE;
+    }
+    run_loaded(chapter, args, args.load_scene(chapter), render)
+}
+
+/// [`run`], or with `--pixel X,Y` the pixel's ray tree instead of a
+/// picture: `explain(scene, pixel)` traces the pixel's ray as the chapter
+/// does and says what its tracer does and what it saw.
+pub fn run_or_explain(
+    chapter: &Chapter,
+    args: &RenderArgs,
+    render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
+    explain: impl Fn(&Scene, Pixel) -> (TracerInfo, RayNode),
+) -> ExitCode {
+    end_quietly_when_output_closes();
+    let loaded = args.load_scene(chapter);
+    match args.pixel {
+        None => run_loaded(chapter, args, loaded, render),
+        Some(pixel) => explain_pixel(chapter, args, loaded, pixel, explain),
+    }
+}
+
+/// The loaded scene, its name, its effect plan and the scene with the plan
+/// applied; prints a note for each effect left to a later chapter. `None`
+/// (after saying why) when the scene did not load or `--strict` refuses it.
+fn planned(
+    chapter: &Chapter,
+    args: &RenderArgs,
+    loaded: Result<(Scene, String), SceneError>,
+) -> Option<(EffectPlan, Scene, String)> {
+    let (scene, name) = match loaded {
+        Ok(loaded) => loaded,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return None;
+        }
+    };
+    let plan = EffectPlan::new(chapter, &scene, &args.without);
+    for note in plan.notes() {
+        if args.strict {
+            eprintln!("error: {note}; --strict refuses to render without it");
+            return None;
+        }
+        eprintln!("note: {note}; this chapter renders without it");
+    }
+    let scene = plan.apply(chapter, scene);
+    Some((plan, scene, name))
+}
+
+/// [`run`] once the scene is loaded (or failed to load): `loaded` is the
+/// scene and its name.
+fn run_loaded(
+    chapter: &Chapter,
+    args: &RenderArgs,
+    loaded: Result<(Scene, String), SceneError>,
+    render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
+) -> ExitCode {
+    let Some((plan, scene, name)) = planned(chapter, args, loaded) else {
+        return ExitCode::FAILURE;
+    };
+    println!("{plan}");
+    let bar = progress_bar(scene.image.height, args.quiet);
+    // Quick renders show no bar: it appears once a render has taken a second.
+    bar.set_draw_target(ProgressDrawTarget::hidden());
+    let shown = std::sync::Once::new();
+    let start = Instant::now();
+    let on_row = || {
+        bar.inc(1);
+        if !args.quiet && start.elapsed() > Duration::from_secs(1) {
+            shown.call_once(|| bar.set_draw_target(ProgressDrawTarget::stderr()));
+        }
+    };
+    let rendered = with_threads(args.threads, || render(&scene, &on_row));
+    let Ok((image, stats)) = rendered else {
+        eprintln!("error: cannot start {:?} rendering threads", args.threads);
+        return ExitCode::FAILURE;
+    };
+    let seconds = start.elapsed();
+    bar.finish_and_clear();
+    let out = args.output_path(chapter);
+    if let Err(e) = image.save_png(&out) {
+        eprintln!("error: cannot write {}: {e}", out.display());
+        return ExitCode::FAILURE;
+    }
+    report(
+        chapter,
+        &name,
+        &out,
+        &Rendered {
+            image,
+            stats,
+            seconds,
+        },
+    );
+    ExitCode::SUCCESS
+}
+
+/// Runs `work` on a pool of `threads` threads, so that every parallel loop
+/// inside it uses that many; on rayon's global pool (one thread per core)
+/// when `None`.
+pub fn with_threads<T: Send>(
+    threads: Option<u32>,
+    work: impl FnOnce() -> T + Send,
+) -> Result<T, rayon::ThreadPoolBuildError> {
+    let Some(n) = threads else {
+        return Ok(work());
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(n as usize)
+        .build()?;
+    Ok(pool.install(work))
+}
+
+/// Prints what was rendered, where, how big, how long and how many rays.
+pub fn report(chapter: &Chapter, scene: &str, out: &std::path::Path, r: &Rendered) {
+    println!(
+        "chapter {} ({}): rendered {scene}\nwrote {} ({}×{} pixels) in {:.3} s\n{}",
+        chapter.entry().folder,
+        chapter.entry().title,
+        out.display(),
+        r.image.width,
+        r.image.height,
+        r.seconds.as_secs_f64(),
+        r.stats
+    );
+}
+
+/// Lets the process end quietly when whoever reads its output goes away, as
+/// `raybook render … | head -1` does after one line.
+///
+/// A Rust program ignores the signal (SIGPIPE) that ends other command-line
+/// tools then, so its next `println!` would panic ("failed printing to
+/// stdout: Broken pipe"). Restoring the signal's default action makes the
+/// process end silently instead, like `cat` or `grep`. Every binary calls
+/// this first (chapter binaries through [`run`]).
+pub fn end_quietly_when_output_closes() {
+    #[cfg(unix)]
+    // SAFETY: signal() only sets the process's action for SIGPIPE back to
+    // the default; no handler of ours runs.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}

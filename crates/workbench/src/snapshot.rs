@@ -1,0 +1,109 @@
+//! Image snapshots: every chapter's reference pictures, checked with insta.
+//!
+//! References live in `snapshots/<chapter>/<name>.snap.png` (beside insta's
+//! `<name>.snap` metadata) and are ordinary PNGs you can open. A test renders
+//! its picture and calls [`assert_image`]:
+//!
+//! * within the [`Tolerance`], insta is handed the reference's own bytes, so it
+//!   sees no change (encoder versions and last-bit differences never matter);
+//! * beyond it, the actual picture and a three-panel diff are written to
+//!   `target/snapshot-failures/<chapter>/`, their paths and the size of the
+//!   difference are printed, and insta is handed the new picture: the test
+//!   fails, and `cargo insta review` shows the change to accept or reject.
+
+use std::path::{Path, PathBuf};
+
+use crate::compare::{Tolerance, compare, diff_image};
+use ch00_toolkit::Image;
+use ch00_toolkit::image::{encode_png, write_atomically};
+
+/// The workspace root (this crate lives in `crates/workbench`).
+pub fn workspace_root() -> PathBuf {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    root.canonicalize().unwrap_or(root)
+}
+
+/// Where a chapter's references are kept.
+pub fn snapshot_dir(chapter: &str) -> PathBuf {
+    workspace_root().join("snapshots").join(chapter)
+}
+
+/// The reference PNG of snapshot `name` of `chapter`.
+pub fn reference_path(chapter: &str, name: &str) -> PathBuf {
+    snapshot_dir(chapter).join(format!("{name}.snap.png"))
+}
+
+/// Where failed comparisons leave their pictures (git-ignored).
+pub fn failure_dir(chapter: &str) -> PathBuf {
+    workspace_root()
+        .join("target")
+        .join("snapshot-failures")
+        .join(chapter)
+}
+
+/// Asserts that `image` matches the reference picture `name` of `chapter`,
+/// within the snapshot tolerance for its size.
+pub fn assert_image(chapter: &str, name: &str, image: &Image) {
+    let actual = image.to_rgb8();
+    let reference = std::fs::read(reference_path(chapter, name)).ok();
+    let bytes = match reference
+        .as_deref()
+        .map(|r| check(chapter, name, r, &actual))
+    {
+        Some(Ok(())) => reference.expect("read above"),
+        Some(Err(report)) => {
+            eprintln!("{report}");
+            encode_png(&actual)
+        }
+        None => encode_png(&actual),
+    };
+    insta::with_settings!({
+        snapshot_path => snapshot_dir(chapter),
+        prepend_module_to_snapshot => false,
+        omit_expression => true,
+    }, {
+        insta::assert_binary_snapshot!(&format!("{name}.png"), bytes);
+    });
+}
+
+/// Compares with the reference PNG; on failure writes the actual and diff
+/// pictures to [`failure_dir`] and returns a report naming them.
+pub fn check(
+    chapter: &str,
+    name: &str,
+    reference: &[u8],
+    actual: &image::RgbImage,
+) -> Result<(), String> {
+    let expected = match image::load_from_memory(reference) {
+        Ok(img) => img.to_rgb8(),
+        Err(e) => {
+            return Err(format!(
+                "snapshot {chapter}/{name}: cannot decode the reference: {e}"
+            ));
+        }
+    };
+    let tolerance = Tolerance::for_size(actual.width(), actual.height());
+    let verdict = compare(&expected, actual, tolerance);
+    if verdict.passed() {
+        return Ok(());
+    }
+    let dir = failure_dir(chapter);
+    let actual_path = dir.join(format!("{name}.actual.png"));
+    let diff_path = dir.join(format!("{name}.diff.png"));
+    let diff = diff_image(&expected, actual, tolerance);
+    let written = write_atomically(&actual_path, &encode_png(actual))
+        .and_then(|()| write_atomically(&diff_path, &encode_png(&diff)));
+    let files = match written {
+        Ok(()) => format!(
+            "  actual: {}\n  diff (expected | mask | actual): {}",
+            actual_path.display(),
+            diff_path.display()
+        ),
+        Err(e) => format!("  (could not write the failure pictures: {e})"),
+    };
+    Err(format!(
+        "snapshot {chapter}/{name} differs from its reference: {verdict}\n\
+         (tolerance: {} steps per channel, {} pixels)\n{files}",
+        tolerance.channel, tolerance.pixels
+    ))
+}

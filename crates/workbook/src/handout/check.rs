@@ -1,0 +1,323 @@
+//! The maintainers' check of the exercises, as rustlings has one: variants
+//! of the workbook with some exercise bodies replaced (by `todo!`, by a
+//! classic mistake, by the lecture's own method), built and tested.
+//!
+//! The variants are built with cargo inside `target/handout-check/`, with
+//! their own target folder: cargo names a workspace member's artifacts by its
+//! path inside the workspace, so building another copy of the workbook in
+//! the main target folder would leave artifacts that cargo takes for the
+//! reference's. The registry dependencies are another matter: their
+//! artifacts are the same in both, so the check's target folder starts with
+//! hard links to those the main build has compiled already, and the check
+//! compiles only the workbook's own crates. Variants are written into one
+//! folder, file by file only where they differ, so cargo rebuilds only the
+//! chapter that changed.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use serde::Deserialize;
+
+use super::{Region, workspace_files, write_tree_with};
+use crate::progress::{TestOutput, parse};
+use crate::workbench::chapters::{self, ChapterEntry};
+
+/// Where the variants are written and built.
+pub struct Check {
+    root: PathBuf,
+    work: PathBuf,
+    target: PathBuf,
+}
+
+impl Check {
+    /// A check of the workspace at `root`, its registry dependencies linked
+    /// from the main build (`cargo test` or `cargo build` has run there).
+    pub fn new(root: &Path) -> Result<Check, String> {
+        let base = root.join("target/handout-check");
+        let check = Check {
+            root: root.to_owned(),
+            work: base.join("work"),
+            target: base.join("target"),
+        };
+        std::fs::create_dir_all(&check.work)
+            .map_err(|e| format!("cannot create {}: {e}", check.work.display()))?;
+        check.share_dependencies()?;
+        Ok(check)
+    }
+
+    /// Writes the workspace into the work folder with the regions' bodies
+    /// that `body` gives (None keeps the reference's), and removes what an
+    /// earlier variant left behind.
+    pub fn write_variant(&self, body: impl Fn(&Region) -> Option<String>) -> Result<(), String> {
+        write_tree_with(&self.root, &self.work, body)?;
+        let keep: BTreeSet<PathBuf> = workspace_files(&self.root)?.into_iter().collect();
+        prune(&self.work, Path::new(""), &keep).map_err(|e| format!("cannot prune: {e}"))
+    }
+
+    /// cargo in the work folder, building into the check's own target
+    /// folder, offline (the variant's Cargo.lock is the reference's, whose
+    /// dependencies are fetched already). Success, and what it printed.
+    pub fn cargo(&self, args: &[&str]) -> Result<(bool, String), String> {
+        let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+        let out = Command::new(cargo)
+            .args(args)
+            .current_dir(&self.work)
+            .env("CARGO_TARGET_DIR", &self.target)
+            .env_remove("CARGO_MAKEFLAGS")
+            .output()
+            .map_err(|e| format!("cannot run cargo: {e}"))?;
+        let text = format!(
+            "{}\n{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+        Ok((out.status.success(), text))
+    }
+
+    /// `cargo test -p <package>` on the current variant: success, what it
+    /// printed, and that read as test results.
+    pub fn test(&self, package: &str) -> Result<(bool, String, TestOutput), String> {
+        let (ok, text) = self.cargo(&[
+            "test",
+            "--offline",
+            "-p",
+            package,
+            "--no-fail-fast",
+            "--color",
+            "never",
+            "--",
+            "--nocapture",
+        ])?;
+        let parsed = parse(&text);
+        Ok((ok, text, parsed))
+    }
+
+    /// Links the registry dependencies that the main build has compiled
+    /// into the check's target folder, where they are not there yet: their
+    /// artifacts, fingerprints and build-script outputs. The workbook's own
+    /// crates are left out; cargo builds them anew.
+    fn share_dependencies(&self) -> Result<(), String> {
+        let metadata = cargo_metadata::MetadataCommand::new()
+            .current_dir(&self.root)
+            .exec()
+            .map_err(|e| format!("cargo metadata: {e}"))?;
+        let main = metadata.target_directory.as_std_path().join("debug");
+        let registry: Vec<_> = metadata
+            .packages
+            .iter()
+            .filter(|p| p.source.is_some())
+            .collect();
+        let packages: BTreeSet<String> = registry.iter().map(|p| p.name.to_string()).collect();
+        let crates: BTreeSet<String> = registry
+            .iter()
+            .flat_map(|p| p.targets.iter().map(|t| t.name.replace('-', "_")))
+            .collect();
+        // deps/ holds lib<crate>-<hash>.rlib and <crate>-<hash>.d;
+        // .fingerprint/ and build/ hold <package>-<hash> folders.
+        let stem = |name: &str| {
+            let name = name.strip_prefix("lib").unwrap_or(name);
+            name.rsplit_once('-').map(|(stem, _)| stem.to_owned())
+        };
+        let debug = self.target.join("debug");
+        link_matching(&main.join("deps"), &debug.join("deps"), |n| {
+            stem(n).is_some_and(|s| crates.contains(&s))
+        })
+        .and_then(|()| {
+            for folder in [".fingerprint", "build"] {
+                link_matching(&main.join(folder), &debug.join(folder), |n| {
+                    n.rsplit_once('-')
+                        .is_some_and(|(s, _)| packages.contains(s))
+                })?;
+            }
+            Ok(())
+        })
+        .map_err(|e| format!("cannot link the main build's dependencies: {e}"))
+    }
+}
+
+/// Hard-links each entry of `from` whose name is chosen (folders with all
+/// they hold) into `to`, unless it is there already.
+fn link_matching(from: &Path, to: &Path, chosen: impl Fn(&str) -> bool) -> std::io::Result<()> {
+    let Ok(entries) = std::fs::read_dir(from) else {
+        return Ok(());
+    };
+    std::fs::create_dir_all(to)?;
+    for entry in entries {
+        let entry = entry?;
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if chosen(&name) {
+            link_tree(&entry.path(), &to.join(&name))?;
+        }
+    }
+    Ok(())
+}
+
+fn link_tree(from: &Path, to: &Path) -> std::io::Result<()> {
+    if from.is_dir() {
+        std::fs::create_dir_all(to)?;
+        for entry in std::fs::read_dir(from)? {
+            let entry = entry?;
+            link_tree(&entry.path(), &to.join(entry.file_name()))?;
+        }
+    } else if !to.exists() && std::fs::hard_link(from, to).is_err() {
+        std::fs::copy(from, to)?;
+    }
+    Ok(())
+}
+
+/// Removes the files under `dir` that are not in `keep` (left over from an
+/// earlier variant: deleted sources, snapshot failures, insta's .snap.new).
+fn prune(dir: &Path, relative: &Path, keep: &BTreeSet<PathBuf>) -> std::io::Result<()> {
+    for entry in std::fs::read_dir(dir.join(relative))? {
+        let entry = entry?;
+        let path = relative.join(entry.file_name());
+        if entry.file_type()?.is_dir() {
+            prune(dir, &path, keep)?;
+        } else if !keep.contains(&path) {
+            std::fs::remove_file(dir.join(&path))?;
+        }
+    }
+    Ok(())
+}
+
+/// A classic mistake in an exercise, from a chapter's `mistakes.toml`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Mistake {
+    /// The exercise's id.
+    pub exercise: String,
+    /// The mistake, in a few words.
+    pub what: String,
+    /// A piece of the failing test's output that names the mistake.
+    pub expect: String,
+    /// The region's body with the mistake in it.
+    pub body: String,
+}
+
+/// The lecture's own method for an exercise, written as a student would.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LectureSolution {
+    pub exercise: String,
+    pub body: String,
+}
+
+/// A chapter's `mistakes.toml`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MistakesFile {
+    #[serde(default)]
+    pub mistake: Vec<Mistake>,
+    #[serde(default)]
+    pub lecture: Vec<LectureSolution>,
+}
+
+/// Every chapter's `mistakes.toml` (those that have one), with its chapter.
+pub fn mistakes_files(root: &Path) -> Result<Vec<(&'static ChapterEntry, MistakesFile)>, String> {
+    let mut found = Vec::new();
+    for chapter in chapters::all() {
+        let path = root.join(chapter.path()).join("mistakes.toml");
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
+        let file = toml::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+        found.push((chapter, file));
+    }
+    Ok(found)
+}
+
+/// What replaying one mistake showed.
+#[derive(Debug)]
+pub enum Caught {
+    /// A test failed and its output names the mistake.
+    Named,
+    /// Tests failed, but none said `expect`.
+    Unnamed,
+    /// Every test passed: the mistake goes unnoticed.
+    Missed,
+    /// The mistaken body does not compile (the entry is wrong).
+    NoBuild(String),
+}
+
+/// Writes `mistake` into its exercise and runs the chapter's tests.
+pub fn replay(check: &Check, chapter: &ChapterEntry, mistake: &Mistake) -> Result<Caught, String> {
+    check.write_variant(|r| (r.id == mistake.exercise).then(|| mistake.body.clone()))?;
+    let (ok, text, parsed) = check.test(&chapter.package())?;
+    Ok(if let Some(error) = parsed.compile_error {
+        Caught::NoBuild(error)
+    } else if ok {
+        Caught::Missed
+    } else if text.contains(&mistake.expect) {
+        Caught::Named
+    } else {
+        Caught::Unnamed
+    })
+}
+
+/// Writes the lecture's methods (the `[[lecture]]` solutions) into their
+/// exercises and runs their chapters' tests, which must all pass. An
+/// exercise with several such solutions is tried once with each: round k
+/// takes every exercise's k-th. A line per round says what passed.
+pub fn lectures_pass(check: &Check, root: &Path) -> Result<Vec<String>, String> {
+    let files = mistakes_files(root)?;
+    // rounds[k]: the k-th solution of each exercise that has that many.
+    let mut rounds: Vec<Vec<(&ChapterEntry, &LectureSolution)>> = Vec::new();
+    let mut tried: std::collections::BTreeMap<&str, usize> = Default::default();
+    for (chapter, file) in &files {
+        for solution in &file.lecture {
+            let k = tried.entry(solution.exercise.as_str()).or_default();
+            if rounds.len() == *k {
+                rounds.push(Vec::new());
+            }
+            rounds[*k].push((*chapter, solution));
+            *k += 1;
+        }
+    }
+    let mut lines = Vec::new();
+    for (round, chosen) in rounds.iter().enumerate() {
+        check.write_variant(|r| {
+            let solution = chosen.iter().find(|(_, s)| s.exercise == r.id);
+            solution.map(|(_, s)| s.body.clone())
+        })?;
+        let ids: Vec<&str> = chosen.iter().map(|(_, s)| s.exercise.as_str()).collect();
+        let mut packages: Vec<String> = chosen.iter().map(|(c, _)| c.package()).collect();
+        packages.dedup();
+        for package in &packages {
+            let (ok, output, _) = check.test(package)?;
+            if !ok {
+                return Err(format!(
+                    "{package}: the lecture's method for {ids:?} fails a test:\n{output}"
+                ));
+            }
+        }
+        lines.push(format!(
+            "round {}: the lecture's methods for {} pass every test of {}",
+            round + 1,
+            ids.join(", "),
+            packages.join(", ")
+        ));
+    }
+    Ok(lines)
+}
+
+/// The handout itself, every exercise taken out: every crate and binary
+/// compiles (taking a body out changes no signature, so the tests compile
+/// as they do against the reference).
+pub fn whole_handout_builds(check: &Check) -> Result<(), String> {
+    check.write_variant(|r| Some(r.todo_line()))?;
+    let (ok, output) = check.cargo(&[
+        "build",
+        "--offline",
+        "--workspace",
+        "--lib",
+        "--bins",
+        "--color",
+        "never",
+    ])?;
+    if ok {
+        Ok(())
+    } else {
+        Err(format!("the handout does not compile:\n{output}"))
+    }
+}

@@ -1,0 +1,118 @@
+//! `workbook progress`: where a student is in the workbook.
+//!
+//! Runs each chapter's tests in order, from chapter 1, with `cargo test -p
+//! chNN-name`: like the command it stands for, that stops at the chapter's
+//! first failing test binary, so progress is no slower than it. It reads
+//! what libtest prints and shows a table: the chapter, how many tests pass
+//! and fail, its exercises written so far, and its first failure (a
+//! snapshot's diff picture if a picture differs). The first chapter that
+//! fails is where you are; by default the chapters after it are not run
+//! (they build on it, so they would fail too), `--all` runs them anyway.
+//! The last line says what to do next.
+//!
+//! It works the same in the reference workspace (every chapter passes) and in
+//! a handout from `workbook handout`.
+
+mod parse;
+mod report;
+mod watch;
+
+use std::path::Path;
+use std::process::{Command, ExitCode};
+
+pub use parse::{TestOutput, parse};
+pub use report::{ChapterResult, report};
+
+use crate::handout::{current_workspace, workspace_regions};
+use crate::workbench::chapters::{self, ChapterEntry};
+
+/// `workbook progress`: runs each chapter's tests in order and shows where you are.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct ProgressArgs {
+    /// Run every chapter, not only those up to the first that fails.
+    #[arg(long)]
+    pub all: bool,
+
+    /// Keep running: clear the screen and show the table again on every
+    /// save of a .rs or .toml file under chapters/. Ctrl-C stops.
+    #[arg(long)]
+    pub watch: bool,
+}
+
+/// Runs the tests of one chapter with cargo, from the workspace root, and
+/// reads their output.
+pub fn run_chapter(root: &Path, chapter: &ChapterEntry) -> Result<TestOutput, String> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let out = Command::new(cargo)
+        .args(["test", "-p", &chapter.package(), "--color", "never"])
+        .current_dir(root)
+        .output()
+        .map_err(|e| format!("cannot run cargo: {e}"))?;
+    let text = format!(
+        "{}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut parsed = parse(&text);
+    if !out.status.success() && parsed.failed == 0 && parsed.compile_error.is_none() {
+        // cargo failed before any test ran, and said why on its last line.
+        let last = text.lines().rev().find(|l| l.starts_with("error"));
+        parsed.compile_error = Some(last.unwrap_or("cargo test failed").to_owned());
+    }
+    Ok(parsed)
+}
+
+/// Runs `workbook progress`.
+pub fn main(args: &ProgressArgs) -> ExitCode {
+    let result = if args.watch {
+        current_workspace().and_then(|root| watch::watch(&root, || progress(args)).map(|()| true))
+    } else {
+        progress(args)
+    };
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::FAILURE,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Is this chapter a step of the student's chain? The toolkit (chapter 0)
+/// has nothing to write and its tests take a second of every run (their
+/// doctests are compiled each time); a companion (chapter 4's forward
+/// tracer) is an aside, not a step.
+fn is_a_step(chapter: &ChapterEntry) -> bool {
+    chapter.number() > 0 && !chapter.companion
+}
+
+/// Prints the table; true if every chapter run passed.
+fn progress(args: &ProgressArgs) -> Result<bool, String> {
+    let root = current_workspace()?;
+    let regions = workspace_regions(&root)?;
+    let mut results = Vec::new();
+    let mut failing = false;
+    for chapter in chapters::all().iter().filter(|c| is_a_step(c)) {
+        let exercises = regions
+            .iter()
+            .filter(|(file, _, _)| file.starts_with(chapter.path()))
+            .cloned()
+            .collect();
+        let output = if failing && !args.all {
+            None
+        } else {
+            eprintln!("testing {} ...", chapter.folder);
+            let output = run_chapter(&root, chapter)?;
+            failing |= !output.passed_all();
+            Some(output)
+        };
+        results.push(ChapterResult {
+            chapter,
+            output,
+            exercises,
+        });
+    }
+    print!("{}", report(&results, &root));
+    Ok(!failing)
+}

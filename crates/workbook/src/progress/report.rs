@@ -1,0 +1,261 @@
+//! The table of where a student is, and the advice of its last line.
+
+use std::path::{Path, PathBuf};
+
+use tabled::builder::Builder;
+use tabled::settings::object::Columns;
+use tabled::settings::{Alignment, Padding, Style};
+
+use super::TestOutput;
+use crate::handout::Region;
+use crate::workbench::chapters::ChapterEntry;
+
+/// A chapter's outcome in the table.
+#[derive(Debug, Clone)]
+pub struct ChapterResult {
+    pub chapter: &'static ChapterEntry,
+    /// None if it was not run (a chapter before it fails).
+    pub output: Option<TestOutput>,
+    /// Its exercise regions: file, line, region.
+    pub exercises: Vec<(PathBuf, usize, Region)>,
+}
+
+impl ChapterResult {
+    fn open_exercises(&self) -> impl Iterator<Item = &(PathBuf, usize, Region)> {
+        self.exercises.iter().filter(|(_, _, r)| r.is_open())
+    }
+
+    /// Exercises written out of all: `1/2`, or `-` for a chapter without.
+    fn exercises_done(&self) -> String {
+        let total = self.exercises.len();
+        let done = total - self.open_exercises().count();
+        if total == 0 {
+            "-".to_owned()
+        } else {
+            format!("{done}/{total}")
+        }
+    }
+}
+
+/// The first thing that went wrong in a chapter's run, in a few words;
+/// paths relative to the workspace `root`.
+fn first_failure(output: &TestOutput, root: &Path) -> String {
+    let relative = |p: &str| {
+        Path::new(p)
+            .strip_prefix(root)
+            .map_or(p.to_owned(), |r| r.display().to_string())
+    };
+    if let Some(error) = &output.compile_error {
+        format!("does not compile: {error}")
+    } else if let Some((name, diff)) = output.snapshots.first() {
+        match diff {
+            Some(diff) => format!("snapshot {name}: {}", relative(diff)),
+            None => format!("snapshot {name}"),
+        }
+    } else if let Some(test) = output.failed_tests.first() {
+        format!("test {test}")
+    } else if output.passed == 0 {
+        "no tests ran".to_owned()
+    } else {
+        String::new()
+    }
+}
+
+/// The table's line for one chapter; `here` marks where the student is.
+fn table_line(result: &ChapterResult, here: bool, root: &Path) -> [String; 6] {
+    let (passed, failed, failure) = match &result.output {
+        None => ("-".into(), "-".into(), "not run".to_owned()),
+        Some(o) => (
+            o.passed.to_string(),
+            o.failed.to_string(),
+            first_failure(o, root),
+        ),
+    };
+    let marker = if here { "→" } else { "" };
+    [
+        marker.into(),
+        result.chapter.folder.clone(),
+        passed,
+        failed,
+        result.exercises_done(),
+        failure,
+    ]
+}
+
+/// The table and the advice, as text.
+pub fn report(results: &[ChapterResult], root: &Path) -> String {
+    let here = results
+        .iter()
+        .position(|r| r.output.as_ref().is_some_and(|o| !o.passed_all()));
+    let mut builder = Builder::new();
+    builder.push_record([
+        "",
+        "chapter",
+        "passed",
+        "failed",
+        "exercises",
+        "first failure",
+    ]);
+    for (i, result) in results.iter().enumerate() {
+        builder.push_record(table_line(result, Some(i) == here, root));
+    }
+    let mut table = builder.build();
+    // Plain columns, two spaces apart, the counts right-aligned.
+    table
+        .with(Style::empty())
+        .with(Padding::new(0, 2, 0, 0))
+        .modify(Columns::new(2..4), Alignment::right());
+    let text = table.to_string();
+    let lines: Vec<&str> = text.lines().map(str::trim_end).collect();
+    format!("{}\n\n{}\n", lines.join("\n"), next_step(results, here))
+}
+
+/// The advice of the last line.
+fn next_step(results: &[ChapterResult], here: Option<usize>) -> String {
+    let Some(i) = here else {
+        return "next: every chapter passes: you have written a ray tracer. Try the \
+                Extend and Explore exercises at the end of each chapter's README, render \
+                a scene of your own (`cargo run --release -p ch07-termination -- my.toml`) \
+                and read \"Where ray tracing goes next\" in chapters/07-termination/README.md."
+            .to_owned();
+    };
+    let row = &results[i];
+    let chapter = row.chapter;
+    let readme = format!("chapters/{}/README.md", chapter.folder);
+    let command = format!("cargo test -p {}", chapter.package());
+    let output = row.output.as_ref().expect("a failing row was run");
+    let open: Vec<_> = row.open_exercises().collect();
+    if let Some(error) = &output.compile_error {
+        return format!(
+            "next: chapter {} does not compile ({error}); run `{command}` to see the whole message",
+            chapter.number()
+        );
+    }
+    // The exercise a failing test named, else the first one not written yet.
+    let named = output
+        .todos
+        .iter()
+        .find_map(|id| open.iter().find(|(_, _, r)| &r.id == id));
+    match named.or(open.first()) {
+        Some((file, line, region)) => format!(
+            "next: chapter {}: exercise {} in {}:{line}: {}\n      \
+             read {readme}, write it, then run `{command}`",
+            chapter.number(),
+            region.id,
+            file.display(),
+            region.hint
+        ),
+        None => {
+            // A test's own message says most; a picture's diff comes next.
+            let told = output
+                .panics
+                .iter()
+                .find(|(test, _)| !test.starts_with("snapshot"));
+            let what = match (told, output.snapshots.first()) {
+                (Some((test, message)), _) => {
+                    return format!(
+                        "next: chapter {}: the test {test} fails:\n      {message}\n      \
+                         run `{command}` and compare with {readme}",
+                        chapter.number()
+                    );
+                }
+                (None, Some((name, _))) => format!("the snapshot {name} differs"),
+                (None, None) => match output.failed_tests.first() {
+                    Some(test) => format!("the test {test} fails"),
+                    None => "no test ran".to_owned(),
+                },
+            };
+            format!(
+                "next: chapter {}: {what}; run `{command}` and compare with {readme}",
+                chapter.number()
+            )
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::progress::parse;
+    use crate::progress::parse::tests::FAILING;
+
+    fn row(folder: &str, output: Option<&str>, exercises: &str) -> ChapterResult {
+        let source = format!("fn f() {{\n{exercises}}}\n");
+        let regions = crate::handout::regions(&source).unwrap();
+        ChapterResult {
+            chapter: crate::workbench::chapters::find(folder).unwrap(),
+            output: output.map(parse),
+            exercises: regions
+                .into_iter()
+                .map(|r| {
+                    (
+                        PathBuf::from(format!("chapters/{folder}/src/lib.rs")),
+                        r.start + 1,
+                        r,
+                    )
+                })
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn the_report_marks_the_first_failing_chapter_and_names_the_next_exercise() {
+        let ok = "test result: ok. 5 passed; 0 failed; 0 ignored\n";
+        let open = "    // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light\n    todo!(\"...\")\n    // END EXERCISE\n";
+        let rows = [
+            row("02-hits", Some(ok), ""),
+            row("03-lambert", Some(FAILING), open),
+            row("04-shadows", None, ""),
+        ];
+        let text = report(&rows, Path::new("/w"));
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(lines[0].contains("chapter") && lines[0].contains("first failure"));
+        assert!(lines[1].starts_with("   02-hits") && lines[1].trim_end().ends_with('-'));
+        assert!(lines[2].starts_with("→  03-lambert"), "{text}");
+        assert!(lines[2].contains(" 0/1 "), "{text}");
+        assert!(
+            lines[2].ends_with(
+                "  snapshot 03-lambert/default: target/snapshot-failures/03-lambert/default.diff.png"
+            ),
+            "{text}"
+        );
+        assert!(lines[3].contains("not run"));
+        assert!(
+            text.contains(
+                "next: chapter 3: exercise ch03-lambert in chapters/03-lambert/src/lib.rs:2"
+            ),
+            "{text}"
+        );
+        assert!(text.contains("`cargo test -p ch03-lambert`"));
+    }
+
+    #[test]
+    fn when_everything_passes_the_report_says_so() {
+        let ok = "test result: ok. 5 passed; 0 failed; 0 ignored\n";
+        let done = "    // EXERCISE(ch03-lambert): x\n    1.0\n    // END EXERCISE\n";
+        let rows = [row("03-lambert", Some(ok), done)];
+        let text = report(&rows, Path::new("/w"));
+        assert!(text.contains("1/1"), "{text}");
+        assert!(!text.contains('→'));
+        assert!(text.contains("next: every chapter passes"));
+    }
+
+    #[test]
+    fn a_written_exercise_that_fails_is_explained_by_its_tests_message() {
+        let failing = "thread 'the_lectures_worked_example' (7) panicked at tests/chapter02.rs:60:5:\n\
+                       assertion `left == right` failed: the roots are 1 and 3\n  \
+                       left: None\n right: Some((1.0, 3.0))\n\
+                       test result: FAILED. 3 passed; 1 failed; 0 ignored\n";
+        let written = "    // EXERCISE(ch02-sphere): x\n    None\n    // END EXERCISE\n";
+        let rows = [row("02-hits", Some(failing), written)];
+        let text = report(&rows, Path::new("/w"));
+        assert!(
+            text.contains(
+                "next: chapter 2: the test the_lectures_worked_example fails:\n      \
+                 assertion `left == right` failed: the roots are 1 and 3; left: None; \
+                 right: Some((1.0, 3.0))\n      run `cargo test -p ch02-hits`"
+            ),
+            "{text}"
+        );
+    }
+}
