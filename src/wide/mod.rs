@@ -26,6 +26,7 @@
 //! chosen as chapter 2 chooses it, so the pictures equal brute force's.
 //! What it buys is measured in chapter 8's text and the README.
 
+mod closest;
 mod node;
 mod packet;
 mod primitive;
@@ -267,7 +268,7 @@ fn area(binary: &[build::Node], n: usize) -> f32 {
 
 impl World for WideBvh<'_> {
     fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let mut closest = traverse::Closest::new(t_max);
+        let mut closest = closest::Closest::new(t_max);
         for &object in &self.planes {
             let limit = closest.limit();
             let t = crate::tracer::intersect(self.shape(object), ray, t_min, limit);

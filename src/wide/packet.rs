@@ -19,8 +19,8 @@
 
 use glam::{BVec4A, Vec4};
 
+use super::closest::Closest;
 use super::primitive::{Geometry, PreparedRay, Primitive, Weights};
-use super::traverse::Closest;
 use ch08_bvh::Aabb;
 
 use crate::toolkit::Vec3;

@@ -19,9 +19,10 @@ use std::process::Command;
 
 use serde::Deserialize;
 
-use super::{Region, workspace_files, write_tree_with};
 use crate::progress::{TestOutput, parse};
+use crate::regions::Region;
 use crate::workbench::chapters::{self, ChapterEntry};
+use crate::workspace::{workspace_files, write_tree_with};
 
 /// Where the variants are written and built.
 pub struct Check {

@@ -5,19 +5,17 @@
 //! by `todo!`, so that its tests fail until the student writes it.
 
 pub mod check;
-mod regions;
 pub mod take_out;
-mod workspace;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use check::{Caught, Check};
-pub use regions::{ALLOW_UNUSED, END, Region, START, hand_out, regions, replace_bodies};
-pub use workspace::{
+pub use crate::regions::{ALLOW_UNUSED, END, Region, START, hand_out, regions, replace_bodies};
+pub use crate::workspace::{
     Written, current_workspace, holds_exercises, workspace_files, workspace_regions, write_tree,
     write_tree_with,
 };
+use check::{Caught, Check};
 
 /// `workbook handout DIR`: writes the workbook with its exercises taken out.
 #[derive(clap::Args, Debug, Clone)]

@@ -23,8 +23,8 @@ use std::process::{Command, ExitCode};
 pub use parse::{TestOutput, parse};
 pub use report::{ChapterResult, report};
 
-use crate::handout::{current_workspace, workspace_regions};
 use crate::workbench::chapters::{self, ChapterEntry};
+use crate::workspace::{current_workspace, workspace_regions};
 
 /// `workbook progress`: runs each chapter's tests in order and shows where you are.
 #[derive(clap::Args, Debug, Clone, Default)]

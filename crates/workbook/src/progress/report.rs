@@ -7,7 +7,7 @@ use tabled::settings::object::Columns;
 use tabled::settings::{Alignment, Padding, Style};
 
 use super::TestOutput;
-use crate::handout::Region;
+use crate::regions::Region;
 use crate::workbench::chapters::ChapterEntry;
 
 /// A chapter's outcome in the table.
@@ -181,7 +181,7 @@ mod tests {
 
     fn row(folder: &str, output: Option<&str>, exercises: &str) -> ChapterResult {
         let source = format!("fn f() {{\n{exercises}}}\n");
-        let regions = crate::handout::regions(&source).unwrap();
+        let regions = crate::regions::regions(&source).unwrap();
         ChapterResult {
             chapter: crate::workbench::chapters::find(folder).unwrap(),
             output: output.map(parse),

@@ -3,7 +3,7 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use super::regions::{Region, regions, replace_bodies};
+use crate::regions::{Region, regions, replace_bodies};
 
 /// The workspace that holds the current folder, or an error saying so.
 pub fn current_workspace() -> Result<PathBuf, String> {
