@@ -1,21 +1,17 @@
-//! raybook: the complete tracer of the workbook and its tools.
+//! raybook: the complete tracer of the workbook.
 //!
-//! The tracer is the most advanced chapter's; this crate adds the tools
-//! around it (the `raybook` command line): bench and accuracy here, and
-//! progress, verify and handout from the `workbook` crate, which a student
-//! runs on its own (`cargo run -p workbook -- progress`).
+//! The tracer is the most advanced chapter's ([`tracer`]), chosen once per
+//! scene by the effects it calls for, and traced against a four-wide BVH
+//! ([`wide`], chapter 8's tree collapsed). The `raybook` command that
+//! renders with it and measures it lives in `crates/measure`; the
+//! student's tools in `crates/workbook`.
 
 pub use ch07_termination::{scene_files, toolkit, workbench};
 /// NFF, the SPD scenes' format: read by the scene-files crate, beside TOML and OBJ.
 pub use scene_files::nff;
 
-pub mod accuracy;
-pub mod bench;
 pub mod tracer;
 pub mod wide;
-
-/// The workbook's tools (the `workbook` crate), under `raybook` too.
-pub use workbook::{handout, progress, verify};
 
 use toolkit::{Image, Scene, Stats};
 use workbench::cli::Chapter;

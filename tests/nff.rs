@@ -440,49 +440,6 @@ fn bvh_and_brute_force_give_the_same_picture_on_the_spd_scenes() {
     }
 }
 
-/// The primary rays of `raybook render <balls-1.nff> --samples N`, an 8×8 picture.
-fn primary_rays_rendered(samples: &str) -> u64 {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("nff-samples-{}-{samples}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let output = std::process::Command::new(env!("CARGO_BIN_EXE_raybook"))
-        .arg("render")
-        .arg(spd("balls-1.nff"))
-        .args([
-            "--samples",
-            samples,
-            "--width",
-            "8",
-            "--height",
-            "8",
-            "--quiet",
-        ])
-        .arg("-o")
-        .arg(dir.join("x.png"))
-        .output()
-        .unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    assert!(
-        output.status.success(),
-        "{stdout}{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    // The statistics line: "N rays: P primary, ...".
-    let primary = stdout
-        .split(" primary")
-        .next()
-        .and_then(|before| before.rsplit(' ').next())
-        .and_then(|count| count.parse().ok());
-    primary.unwrap_or_else(|| panic!("no count of primary rays in:\n{stdout}"))
-}
-
-#[test]
-fn render_takes_the_sample_count_of_the_command_line_for_nff_too() {
-    assert_eq!(primary_rays_rendered("1"), 8 * 8);
-    assert_eq!(primary_rays_rendered("4"), 4 * 8 * 8, "--samples 4");
-}
-
 #[test]
 fn the_render_arguments_read_nff_with_every_override() {
     let args = raybook::workbench::cli::RenderArgs {

@@ -13,6 +13,7 @@ use raybook::tracer::{
     Ray, closest_hit, hit_at, intersect, intersect_plane, intersect_sphere, intersect_triangle,
     sphere_roots,
 };
+use test_support::Rng;
 
 const INF: f32 = f32::INFINITY;
 
@@ -53,35 +54,6 @@ fn distance_from_line(center: Vec3, ray: &Ray) -> f64 {
     let f = ray.origin.as_dvec3() - center.as_dvec3();
     let d = ray.direction.as_dvec3().normalize();
     (f - f.dot(d) * d).length()
-}
-
-/// A small deterministic generator (xorshift64*), so the searches below find
-/// the same rays on every run.
-struct Rng(u64);
-
-impl Rng {
-    /// A float in [lo, hi).
-    fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let bits = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 40; // 24 bits
-        lo + (hi - lo) * (bits as f32 / (1u64 << 24) as f32)
-    }
-
-    fn vec(&mut self, lo: f32, hi: f32) -> Vec3 {
-        Vec3::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
-    }
-
-    /// A random unit vector.
-    fn unit(&mut self) -> Vec3 {
-        loop {
-            let v = self.vec(-1.0, 1.0);
-            if (0.01..=1.0).contains(&v.length_squared()) {
-                return v.normalize();
-            }
-        }
-    }
 }
 
 // ---------------------------------------------------------------- spheres --

@@ -11,6 +11,7 @@ use raybook::toolkit::{Image, Scene, Stats, Vec3};
 use raybook::tracer::{Ray, Termination, World, render_complete};
 use raybook::wide::WideBvh;
 use raybook::workbench::snapshot::workspace_root;
+use test_support::strategies::{point, usable_cone};
 
 fn render(scene: &Scene, world: &(impl World + ?Sized)) -> (Image, Stats) {
     render_complete(scene, world, Termination::of(scene), || {})
@@ -227,10 +228,6 @@ fn shadow_rays_through_spheres_get_chapter_4s_answers() {
     assert!(checked > 3 * 24 * 8 * 4 * 5 * 8 / 2, "{checked}");
 }
 
-fn point() -> impl Strategy<Value = Vec3> {
-    prop::array::uniform3(-4.0f32..4.0).prop_map(Vec3::from)
-}
-
 /// A direction, often along an axis or in a coordinate plane (zeros in rd
 /// make 1/rd infinite in the slab test), else anywhere.
 fn direction() -> impl Strategy<Value = Vec3> {
@@ -265,14 +262,7 @@ fn cone() -> impl Strategy<Value = Shape> {
                     0..3 => base + apex.length() * Vec3::AXES[along],
                     _ => apex,
                 };
-                let usable = base.distance(apex) > 0.1 && base_radius.max(apex_radius) > 0.05;
-                usable.then_some(Shape::Cone {
-                    base,
-                    base_radius,
-                    apex,
-                    apex_radius,
-                    inside_out,
-                })
+                usable_cone((base, apex), (base_radius, apex_radius), inside_out)
             },
         )
 }

@@ -8,6 +8,7 @@ use ch02_hits::{
     CHAPTER, Ray, View, closest_hit, intersect, intersect_plane, intersect_sphere,
     intersect_triangle, render_hits, sphere_roots, sphere_roots_abc, triangle_by_plane,
 };
+use test_support::Rng;
 
 const INF: f32 = f32::INFINITY;
 
@@ -332,23 +333,6 @@ fn a_ray_parallel_to_the_triangle_misses_it() {
             "a ray parallel to the triangle's plane, {place} it, meets it nowhere (or everywhere): \
              no hit, not {hit:?}"
         );
-    }
-}
-
-/// A small deterministic generator (xorshift64*) for the tests below.
-struct Rng(u64);
-
-impl Rng {
-    fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let bits = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 40; // 24 bits
-        lo + (hi - lo) * (bits as f32 / (1u64 << 24) as f32)
-    }
-
-    fn vec(&mut self, lo: f32, hi: f32) -> Vec3 {
-        Vec3::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
     }
 }
 

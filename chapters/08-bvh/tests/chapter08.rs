@@ -9,6 +9,7 @@ use ch08_bvh::workbench::cli::with_threads;
 use ch08_bvh::workbench::snapshot::{assert_image, workspace_root};
 use ch08_bvh::{Bvh, CHAPTER, Ray, Termination, Tracer, World, render_bvh, render_whitted};
 use proptest::prelude::*;
+use test_support::strategies::{cone, point};
 
 /// Every chapter's scene files, the first chapter first.
 fn chapter_scenes() -> Vec<PathBuf> {
@@ -73,28 +74,6 @@ fn snapshot_default() {
     let scene = CHAPTER.default_scene().unwrap().with_size(160, 120);
     let image = render_bvh(&scene, Termination::of(&scene), || {}).0;
     assert_image("08-bvh", "default", &image);
-}
-
-fn point() -> impl Strategy<Value = Vec3> {
-    prop::array::uniform3(-4.0f32..4.0).prop_map(Vec3::from)
-}
-
-/// A cone or cylinder, pointed at either end or not.
-fn cone() -> impl Strategy<Value = Shape> {
-    let radius = || prop_oneof![Just(0.0f32), 0.05f32..1.0];
-    (point(), point(), radius(), radius(), any::<bool>()).prop_filter_map(
-        "no axis or no radius",
-        |(base, apex, base_radius, apex_radius, inside_out)| {
-            let usable = base.distance(apex) > 0.1 && base_radius.max(apex_radius) > 0.05;
-            usable.then_some(Shape::Cone {
-                base,
-                base_radius,
-                apex,
-                apex_radius,
-                inside_out,
-            })
-        },
-    )
 }
 
 fn object() -> impl Strategy<Value = Object> {

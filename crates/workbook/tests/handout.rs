@@ -12,13 +12,13 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-use raybook::handout::check;
-use raybook::handout::take_out::ReferenceTests;
-use raybook::handout::{Region, workspace_regions};
-use raybook::workbench::chapters::{self, ChapterEntry};
+use workbook::handout::check;
+use workbook::handout::take_out::ReferenceTests;
+use workbook::handout::{Region, workspace_regions};
+use workbook::workbench::chapters::{self, ChapterEntry};
 
 fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    workbook::workbench::snapshot::workspace_root()
 }
 
 /// The chapters the handout takes exercises out of (chapters/chapters.toml).
@@ -157,11 +157,11 @@ fn each_exercise_makes_a_test_fail(
 }
 
 #[test]
-fn raybook_handout_writes_a_copy_and_refuses_a_folder_in_use() {
+fn workbook_handout_writes_a_copy_and_refuses_a_folder_in_use() {
     let base = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("handout-cli");
     let _ = std::fs::remove_dir_all(&base);
-    let raybook = |dir: &Path| {
-        Command::new(env!("CARGO_BIN_EXE_raybook"))
+    let handout = |dir: &Path| {
+        Command::new(env!("CARGO_BIN_EXE_workbook"))
             .arg("handout")
             .arg(dir)
             .current_dir(root().join("chapters/03-lambert"))
@@ -170,7 +170,7 @@ fn raybook_handout_writes_a_copy_and_refuses_a_folder_in_use() {
     };
 
     let dir = base.join("student");
-    let out = raybook(&dir);
+    let out = handout(&dir);
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(
         out.status.success(),
@@ -192,7 +192,7 @@ fn raybook_handout_writes_a_copy_and_refuses_a_folder_in_use() {
     assert!(!dir.join("target").exists() && !dir.join(".git").exists());
 
     // The same folder again: it is not empty now.
-    let again = raybook(&dir);
+    let again = handout(&dir);
     assert!(!again.status.success());
     assert!(String::from_utf8_lossy(&again.stderr).contains("is not empty"));
 }

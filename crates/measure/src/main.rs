@@ -12,7 +12,9 @@ use raybook::{CHAPTER, render};
 /// showcase scene with the complete tracer and writes raybook.png.
 ///
 /// The chapters live in chapters/NN-name; run one with
-/// `cargo run --release -p chNN-name -- --help`.
+/// `cargo run --release -p chNN-name -- --help`. The student's tools
+/// (progress, verify, handout) are the workbook's:
+/// `cargo run -p workbook -- --help`.
 #[derive(Parser)]
 #[command(version)]
 struct Cli {
@@ -27,30 +29,18 @@ enum Command {
     Render(RenderArgs),
     /// Times the SPD scenes, against POV-Ray where it is installed (with
     /// --primary: primary rays per thread, against Embree).
-    Bench(raybook::bench::BenchArgs),
+    Bench(measure::bench::BenchArgs),
     /// Measures what accuracy costs in time: depth, threshold, samples per
     /// pixel and effects, as a table, a CSV and a plot.
-    Accuracy(raybook::accuracy::AccuracyArgs),
-    /// Checks a picture made by your own tracer, in any language, against a
-    /// chapter's reference picture.
-    Verify(raybook::verify::VerifyArgs),
-    /// Writes a copy of the workbook for a student, with the exercises'
-    /// solutions replaced by todo!("hint").
-    Handout(raybook::handout::HandoutArgs),
-    /// Runs each chapter's tests in order and shows where you are: passed,
-    /// failed, the first failing snapshot, and what to do next.
-    Progress(raybook::progress::ProgressArgs),
+    Accuracy(measure::accuracy::AccuracyArgs),
 }
 
 fn main() -> ExitCode {
     raybook::workbench::cli::end_quietly_when_output_closes();
     match Cli::parse().command {
         Some(Command::Render(args)) => render_or_explain(&args),
-        Some(Command::Bench(args)) => raybook::bench::run(&args),
-        Some(Command::Accuracy(args)) => raybook::accuracy::main(&args),
-        Some(Command::Verify(args)) => raybook::verify::main(&args),
-        Some(Command::Handout(args)) => raybook::handout::main(&args),
-        Some(Command::Progress(args)) => raybook::progress::main(&args),
+        Some(Command::Bench(args)) => measure::bench::run(&args),
+        Some(Command::Accuracy(args)) => measure::accuracy::main(&args),
         None => {
             let args = RenderArgs {
                 output: Some("raybook.png".into()),

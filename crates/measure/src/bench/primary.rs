@@ -4,9 +4,9 @@
 //! The rays are the renderer's own: one per pixel, through its centre, from
 //! chapter 1's [`Camera`] ([`primary_rays`]). raybook traces them with
 //! `closest_hit` against [`primary_world`] (the complete tracer's four-wide
-//! BVH, [`crate::wide`]), on one thread
+//! BVH, [`raybook::wide`]), on one thread
 //! and on `--threads` threads; Embree traces them through the PyPI package
-//! embreex, run by `benches/embree_primary.py` in a Python that can import
+//! embreex, run by `crates/measure/src/bench/embree_primary.py` in a Python that can import
 //! it, on one thread and in `--threads` processes at once. Only the tracing
 //! is timed on either side: not making the rays, not building either BVH,
 //! not passing the files. The two answers are compared ray by ray (hit or
@@ -34,13 +34,13 @@ use std::time::Instant;
 use rayon::prelude::*;
 
 use super::{BenchArgs, median, scene_name, scene_progress, table};
-use crate::toolkit::Scene;
-use crate::toolkit::scene::Shape;
-use crate::tracer::{Camera, Ray, World};
+use raybook::toolkit::Scene;
+use raybook::toolkit::scene::Shape;
+use raybook::tracer::{Camera, Ray, World};
 
 /// The script that runs Embree; written next to the rays it reads, so the
 /// bench works from any folder.
-const SCRIPT: &str = include_str!("../../benches/embree_primary.py");
+const SCRIPT: &str = include_str!("embree_primary.py");
 
 /// The environment variable naming the Python that runs Embree.
 pub const PYTHON_VAR: &str = "RAYBOOK_PYTHON";
@@ -59,9 +59,9 @@ const UNEVEN: f64 = 1.1;
 const T_TOLERANCE: f32 = 1e-4;
 
 /// The world primary rays are traced against: the complete tracer's
-/// ([`crate::world`]), the one `raybook render` uses.
+/// ([`raybook::world`]), the one `raybook render` uses.
 pub fn primary_world(scene: &Scene) -> impl World + '_ {
-    crate::world(scene)
+    raybook::world(scene)
 }
 
 /// The primary rays of `scene` at its image size, row by row from the top
@@ -434,7 +434,7 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
     let mut timings = Vec::with_capacity(scenes.len());
     for path in scenes {
         bar.set_message(scene_name(path));
-        let scene = crate::nff::load(path)
+        let scene = raybook::nff::load(path)
             .map_err(|e| e.to_string())?
             .with_size(args.size, args.size);
         timings.push(time_scene(

@@ -29,11 +29,11 @@ use indicatif::{HumanDuration, ProgressBar, ProgressStyle};
 pub use fractals::{with_sphereflake, with_tetrahedron};
 pub use primary::{Agreement, PYTHON_VAR, agreement, hit_distances, primary_rays, primary_world};
 
-use crate::scene_files::MAX_IMAGE_SIDE;
+use raybook::scene_files::MAX_IMAGE_SIDE;
 
 /// The SPD scenes that come with this repository (`scenes/spd`, see its
 /// README.md), found wherever the command is run from.
-pub const SPD_SCENES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/spd");
+pub const SPD_SCENES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../scenes/spd");
 
 /// Arguments of `raybook bench`.
 #[derive(clap::Args, Debug, Clone)]

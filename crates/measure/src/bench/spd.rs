@@ -86,7 +86,7 @@ fn pictures_folder() -> Result<PathBuf, String> {
 /// Times raybook on one scene, and POV-Ray on its .pov beside it if any.
 fn time_scene(scene: &Path, setup: &Setup) -> Result<SceneTiming, String> {
     let name = scene_name(scene);
-    let primitives = crate::nff::load(scene)
+    let primitives = raybook::nff::load(scene)
         .map_err(|e| e.to_string())?
         .objects
         .len();
@@ -109,7 +109,7 @@ fn time_scene(scene: &Path, setup: &Setup) -> Result<SceneTiming, String> {
 /// (scenes/peers/tinyraytracer.toml), at tinyraytracer's fixed 1024×768.
 pub const TINYRAYTRACER_SCENE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
-    "/scenes/peers/tinyraytracer.toml"
+    "/../../scenes/peers/tinyraytracer.toml"
 );
 
 /// Times raybook on tinyraytracer's scene, and the tinyraytracer binary
@@ -117,7 +117,7 @@ pub const TINYRAYTRACER_SCENE: &str = concat!(
 /// in) with as many OpenMP threads.
 fn time_tinyraytracer(program: &Path, setup: &Setup) -> Result<SceneTiming, String> {
     let scene = Path::new(TINYRAYTRACER_SCENE);
-    let primitives = crate::scene_files::load(scene)
+    let primitives = raybook::scene_files::load(scene)
         .map_err(|e| e.to_string())?
         .objects
         .len();

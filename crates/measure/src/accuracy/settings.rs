@@ -1,7 +1,7 @@
 //! The accuracy knobs, and the settings each sweep renders.
 
-use crate::toolkit::scene::{Effect, Effects};
-use crate::tracer::Termination;
+use raybook::toolkit::scene::{Effect, Effects};
+use raybook::tracer::Termination;
 
 /// The accuracy knobs of the tracer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

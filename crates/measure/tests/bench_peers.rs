@@ -15,9 +15,7 @@ fn bench(args: &[&str]) -> Output {
         .unwrap()
 }
 
-#[path = "common/table_row.rs"]
-mod table_row;
-use table_row::row;
+use test_support::table_row::row;
 
 #[test]
 fn tinyraytracer_gets_a_row_of_its_own_timed_against_the_program() {

@@ -1,13 +1,13 @@
 //! `raybook accuracy`: the errors behave, the table and the CSV are
 //! complete. Times are measured and reported, never asserted.
 
-use raybook::accuracy::{Knob, Measurement, all_settings, csv, pareto, settings, sweep, table};
+use measure::accuracy::{Knob, Measurement, all_settings, csv, pareto, settings, sweep, table};
 use raybook::scene_files;
 use raybook::toolkit::Scene;
 
 fn scene(path: &str) -> Scene {
-    let root = env!("CARGO_MANIFEST_DIR");
-    scene_files::load(format!("{root}/chapters/{path}"))
+    let root = raybook::workbench::snapshot::workspace_root();
+    scene_files::load(root.join("chapters").join(path))
         .unwrap()
         .with_size(48, 36)
 }

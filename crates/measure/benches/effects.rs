@@ -26,7 +26,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use ch03_lambert::render_lambert;
-use raybook::bench::median;
+use measure::bench::median;
 use raybook::toolkit::{Image, Scene};
 use raybook::tracer::{Termination, Tracer, render_complete, render_whitted};
 use raybook::workbench::cli::EffectPlan;

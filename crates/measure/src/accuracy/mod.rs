@@ -14,7 +14,7 @@ mod plot;
 mod report;
 mod settings;
 
-use crate::scene_files;
+use raybook::scene_files;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -26,8 +26,8 @@ pub use plot::plot;
 pub use report::{csv, pareto, table};
 pub use settings::{Knob, Setting, all_settings, settings};
 
-use crate::toolkit::Scene;
-use crate::toolkit::image::write_atomically;
+use raybook::toolkit::Scene;
+use raybook::toolkit::image::write_atomically;
 
 /// `raybook accuracy`: renders a scene at many settings and shows, measured,
 /// what each accuracy setting costs in time and what it buys.
@@ -112,7 +112,7 @@ pub fn main(args: &AccuracyArgs) -> ExitCode {
 fn load_scene(path: Option<&Path>) -> Result<Scene, String> {
     let loaded = match path {
         Some(path) => scene_files::load(path),
-        None => crate::CHAPTER.default_scene(),
+        None => raybook::CHAPTER.default_scene(),
     };
     loaded.map_err(|e| e.to_string())
 }

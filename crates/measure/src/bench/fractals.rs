@@ -3,8 +3,8 @@
 
 use std::f32::consts::TAU;
 
-use crate::toolkit::scene::{MaterialId, Object, Shape};
-use crate::toolkit::{Scene, Vec3};
+use raybook::toolkit::scene::{MaterialId, Object, Shape};
+use raybook::toolkit::{Scene, Vec3};
 
 /// `scene` with its spheres replaced by a sphereflake of `level` levels:
 /// a sphere with nine spheres a third its size around it (six round the

@@ -1,5 +1,4 @@
-//! Reading the bench's Markdown tables (included by the bench tests with
-//! `#[path]`, so that tests that do not read tables do not carry it).
+//! Reading the bench's Markdown tables.
 
 /// The cells of the table row of `scene` in the bench's output.
 pub fn row(stdout: &str, scene: &str) -> Vec<String> {

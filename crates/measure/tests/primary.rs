@@ -6,7 +6,7 @@
 
 use std::process::{Command, Output};
 
-use raybook::bench::{PYTHON_VAR, hit_distances, primary_rays, primary_world};
+use measure::bench::{PYTHON_VAR, hit_distances, primary_rays, primary_world};
 use raybook::toolkit::Scene;
 use raybook::workbench::snapshot::workspace_root;
 
@@ -56,9 +56,7 @@ fn bench(args: &[&str], python: Option<&str>) -> Output {
     command.output().unwrap()
 }
 
-#[path = "common/table_row.rs"]
-mod table_row;
-use table_row::row;
+use test_support::table_row::row;
 
 #[test]
 fn a_tiny_scene_gets_a_row_with_its_rays_hits_and_throughput() {
@@ -162,7 +160,7 @@ mod fake_embree {
     /// `--check`, reports three one-thread runs (median 0.0002 s) and, when
     /// asked for 2 processes, three runs of 2 (median 0.0004 s; the slower
     /// process's time 1, 4/3 and 2 times the faster's), in the lines
-    /// `benches/embree_primary.py` prints, and writes a distance (0) per ray.
+    /// `crates/measure/src/bench/embree_primary.py` prints, and writes a distance (0) per ray.
     const FAKE_PYTHON: &str = r#"#!/bin/sh
     # $1 is the script, $2 the folder (or --check), $3 the runs, $4 the processes.
     if [ "$2" = "--check" ]; then echo "embreex fake"; exit 0; fi

@@ -2,16 +2,17 @@
 //! a mistaken one.
 
 use ch03_lambert::scene_files;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::Command;
 
 use ch03_lambert::{Camera, Surface, direct_light, lambert};
-use raybook::toolkit::{Color, Image, Scene};
-use raybook::verify::{
+use workbook::toolkit::{Color, Image, Scene};
+use workbook::verify::{
     Diagnosis, Mistake, ObjectMap, ObjectName, Reference, Swap, reference, references, shape_name,
     verify,
 };
-use raybook::workbench::compare::{Tolerance, compare};
+use workbook::workbench::compare::{Tolerance, compare};
+use workbook::workbench::snapshot::workspace_root;
 
 fn temp(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("raybook-verify-{}", std::process::id()));
@@ -113,7 +114,7 @@ fn chapters_are_found_by_number_folder_or_package() {
 
 #[test]
 fn the_reference_itself_passes() {
-    let chapters: Vec<String> = raybook::verify::references()
+    let chapters: Vec<String> = workbook::verify::references()
         .iter()
         .map(|r| r.chapter.number().to_string())
         .collect();
@@ -185,7 +186,7 @@ fn flipped_normals_fail() {
 fn a_wrong_size_fails_with_a_clear_message() {
     let small = image::RgbImage::new(320, 240);
     let path = save("big.png", &small);
-    let output = Command::new(env!("CARGO_BIN_EXE_raybook"))
+    let output = Command::new(env!("CARGO_BIN_EXE_workbook"))
         .args(["verify", "3"])
         .arg(&path)
         .output()
@@ -203,7 +204,7 @@ fn a_wrong_size_fails_with_a_clear_message() {
 #[test]
 fn the_command_passes_the_reference_and_writes_a_diff() {
     let path = save("mine.png", &reference_image("7"));
-    let output = Command::new(env!("CARGO_BIN_EXE_raybook"))
+    let output = Command::new(env!("CARGO_BIN_EXE_workbook"))
         .args(["verify", "07-termination"])
         .arg(&path)
         .output()
@@ -312,7 +313,7 @@ fn rays_through_pixel_corners_are_named() {
         "3",
         &corners.to_rgb8(),
         "corners.png",
-        Mistake::HalfPixelShift(raybook::verify::Corner::TopLeft),
+        Mistake::HalfPixelShift(workbook::verify::Corner::TopLeft),
         "half a pixel",
     );
 }
@@ -368,7 +369,7 @@ fn rays_through_pixel_corners_are_named_in_the_showcase() {
     // Fine detail (the far checkerboard, the glass sphere) differs by more
     // than a half-pixel resampling of the reference explains.
     let corners = chapter_through_corners(&chapter7_scene(), render_chapter7);
-    let corner = Mistake::HalfPixelShift(raybook::verify::Corner::TopLeft);
+    let corner = Mistake::HalfPixelShift(workbook::verify::Corner::TopLeft);
     assert_named("7", &corners, "corners-7.png", corner, "top-left corner");
 }
 
@@ -468,7 +469,7 @@ fn a_picture_one_pixel_off_names_no_mistake() {
 fn the_command_names_the_mistake_and_its_fix() {
     let flipped = image::imageops::flip_vertical(&reference_image("3"));
     let path = save("flipped-command.png", &flipped);
-    let output = Command::new(env!("CARGO_BIN_EXE_raybook"))
+    let output = Command::new(env!("CARGO_BIN_EXE_workbook"))
         .args(["verify", "3"])
         .arg(&path)
         .output()
@@ -493,7 +494,7 @@ fn the_command_names_the_mistake_and_its_fix() {
 /// centre): each pixel's first object hit, by chapter 2's closest hit
 /// through chapter 1's camera.
 fn object_map(reference: &Reference) -> ObjectMap {
-    let scene = scene_files::load(reference.chapter.default_scene_path())
+    let scene = scene_files::load(workspace_root().join(reference.chapter.default_scene_path()))
         .unwrap()
         .with_size(160, 120);
     assert!(
@@ -530,7 +531,7 @@ fn the_object_maps_are_current() {
     let mut stale = Vec::new();
     for reference in references() {
         let name = reference.objects_path();
-        let path = Path::new("snapshots").join(&name);
+        let path = workspace_root().join("snapshots").join(&name);
         let picture = name
             .rsplit('/')
             .next()
@@ -553,6 +554,6 @@ fn the_object_maps_are_current() {
     assert!(
         stale.is_empty(),
         "stale or missing object maps {stale:?}; regenerate them with\n  \
-         RAYBOOK_WRITE_OBJECT_MAPS=1 cargo test --test verify the_object_maps_are_current"
+         RAYBOOK_WRITE_OBJECT_MAPS=1 cargo test -p workbook --test verify the_object_maps_are_current"
     );
 }

@@ -3,15 +3,14 @@
 
 use std::time::Instant;
 
-use ch08_bvh::Bvh;
 use indicatif::ProgressBar;
 
 use super::settings::{Knob, Setting, all_settings};
 use crate::bench::median;
-use crate::toolkit::scene::Effects;
-use crate::toolkit::{Color, Image, Scene};
-use crate::tracer::render_complete;
-use crate::workbench::compare::{psnr, rmse_clamped};
+use raybook::toolkit::scene::Effects;
+use raybook::toolkit::{Color, Image, Scene};
+use raybook::tracer::render_complete;
+use raybook::workbench::compare::{psnr, rmse_clamped};
 
 /// How a setting did: what it cost, and how far its picture is from its
 /// knob's reference.
@@ -97,14 +96,15 @@ fn scene_for(scene: &Scene, setting: &Setting) -> Scene {
 }
 
 /// Renders a setting `runs` times (at least once) with the complete tracer,
-/// as `raybook render` does: BVH build and render, timed together.
+/// as `raybook render` does: the four-wide BVH's build ([`raybook::world`])
+/// and the render, timed together.
 fn render(scene: &Scene, setting: &Setting, runs: usize) -> Rendered {
     let scene = scene_for(scene, setting);
     let mut seconds = Vec::with_capacity(runs);
     let mut last = None;
     for _ in 0..runs.max(1) {
         let start = Instant::now();
-        let bvh = Bvh::build(&scene.objects);
+        let bvh = raybook::world(&scene);
         let (image, stats) = render_complete(&scene, &bvh, setting.termination, || {});
         seconds.push(start.elapsed().as_secs_f64());
         last = Some((image, stats.rays()));

@@ -1,18 +1,18 @@
 //! `bench --scaling`: the BVH's build time and the render time against the
-//! number of primitives, measured in this process.
+//! number of primitives, measured in this process with the tracer that
+//! `raybook render` uses: the complete tracer against the four-wide BVH
+//! ([`raybook::world`]).
 
 use std::path::PathBuf;
 use std::time::Instant;
 
-use ch08_bvh::Bvh;
-
 use super::{
     BenchArgs, median, scene_name, scene_progress, table, with_sphereflake, with_tetrahedron,
 };
-use crate::toolkit::Scene;
-use crate::toolkit::scene::Shape;
-use crate::tracer::{Termination, render_complete};
-use crate::workbench::cli::with_threads;
+use raybook::toolkit::Scene;
+use raybook::toolkit::scene::Shape;
+use raybook::tracer::{Termination, render_complete};
+use raybook::workbench::cli::with_threads;
 
 /// Sphereflake levels generated beyond the SPD files (balls-5, balls-6).
 const FLAKE_LEVELS: [u32; 2] = [5, 6];
@@ -28,8 +28,8 @@ struct ScalingTiming {
     primitives: usize,
     /// Median time to build the BVH.
     build_seconds: f64,
+    /// Nodes of the four-wide BVH.
     nodes: usize,
-    depth: usize,
     /// Median time to render, not counting the build.
     render_seconds: f64,
     /// Rays traced in one render.
@@ -61,7 +61,7 @@ pub(super) fn report(args: &BenchArgs, threads: u32, scenes: &[PathBuf]) -> Resu
 fn cases(scenes: &[PathBuf]) -> Result<Vec<Case>, String> {
     let mut cases = Vec::with_capacity(scenes.len());
     for path in scenes {
-        let scene = crate::nff::load(path).map_err(|e| e.to_string())?;
+        let scene = raybook::nff::load(path).map_err(|e| e.to_string())?;
         cases.push((scene_name(path), scene));
     }
     cases.extend(generated(&cases));
@@ -106,12 +106,12 @@ fn time_case(
 ) -> Result<ScalingTiming, String> {
     let termination = Termination::of(scene);
     let (mut builds, mut renders) = (Vec::new(), Vec::new());
-    let (mut summary, mut rays) = (None, 0);
+    let (mut nodes, mut rays) = (0, 0);
     for _ in 0..runs {
         let start = Instant::now();
-        let bvh = Bvh::build(&scene.objects);
+        let bvh = raybook::world(scene);
         builds.push(start.elapsed().as_secs_f64());
-        summary = Some(bvh.summary());
+        nodes = bvh.node_count();
         let start = Instant::now();
         let (_, stats) = with_threads(Some(threads), || {
             render_complete(scene, &bvh, termination, || {})
@@ -120,13 +120,11 @@ fn time_case(
         renders.push(start.elapsed().as_secs_f64());
         rays = stats.rays();
     }
-    let summary = summary.expect("at least one run");
     Ok(ScalingTiming {
         name,
         primitives: scene.objects.len(),
         build_seconds: median(builds),
-        nodes: summary.nodes,
-        depth: summary.depth,
+        nodes,
         render_seconds: median(renders),
         rays,
     })
@@ -138,8 +136,7 @@ fn timings_table(timings: &[ScalingTiming], threads: u32) -> String {
         "scene",
         "primitives",
         "BVH build",
-        "nodes",
-        "depth",
+        "4-wide nodes",
         "render",
         "rays",
         "ns per ray·thread",
@@ -150,14 +147,13 @@ fn timings_table(timings: &[ScalingTiming], threads: u32) -> String {
 impl ScalingTiming {
     /// The table's cells for this scene; the cost of a ray counts every
     /// one of the `threads` threads' time.
-    fn cells(&self, threads: u32) -> [String; 8] {
+    fn cells(&self, threads: u32) -> [String; 7] {
         let ns_per_ray = self.render_seconds * f64::from(threads) / self.rays as f64 * 1e9;
         [
             self.name.clone(),
             self.primitives.to_string(),
             format!("{:.1} ms", self.build_seconds * 1e3),
             self.nodes.to_string(),
-            self.depth.to_string(),
             format!("{:.2} s", self.render_seconds),
             format!("{:.1} M", self.rays as f64 / 1e6),
             format!("{ns_per_ray:.0}"),

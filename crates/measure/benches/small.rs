@@ -14,7 +14,7 @@ use std::hint::black_box;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-use raybook::bench::median;
+use measure::bench::median;
 use raybook::scene_files::nff;
 use raybook::toolkit::{Image, Scene};
 use raybook::tracer::{Termination, render_complete};
