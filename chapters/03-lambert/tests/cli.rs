@@ -55,3 +55,24 @@ fn a_bad_scene_fails_with_file_and_line() {
         "{stderr}"
     );
 }
+
+#[test]
+fn the_path_criteria_are_refused_before_the_chapter_that_teaches_them() {
+    let output = run(&["--max-depth", "2"]);
+    assert!(!output.status.success());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains(
+            "error: --max-depth: chapter 3 (03-lambert) ends no path by it; \
+             chapter 5 (chapters/05-reflection) introduces it"
+        ),
+        "{stderr}"
+    );
+    let output = run(&["--min-weight", "0.1"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(!output.status.success());
+    assert!(
+        stderr.contains("chapter 7 (chapters/07-termination) introduces it"),
+        "{stderr}"
+    );
+}

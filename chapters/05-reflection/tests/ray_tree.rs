@@ -43,12 +43,18 @@ material = "mirror"
 "#;
 
 fn tree() -> Value {
+    tree_with(&[])
+}
+
+/// The tree of the facing mirrors' middle pixel, with `args` given too.
+fn tree_with(args: &[&str]) -> Value {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("mirrors.toml");
     std::fs::write(&scene, FACING_MIRRORS).unwrap();
     let output = Command::new(env!("CARGO_BIN_EXE_ch05-reflection"))
         .arg(&scene)
         .args(["--pixel", "1,1", "--json"])
+        .args(args)
         .output()
         .unwrap();
     assert!(
@@ -100,4 +106,15 @@ fn each_ray_brings_back_its_local_light_plus_half_the_next() {
         assert_eq!(ray["lights"][0]["status"], "ambient");
         ray = &ray["secondary"][0];
     }
+}
+
+#[test]
+fn max_depth_on_the_command_line_replaces_the_scenes() {
+    let tree = tree_with(&["--max-depth", "1"]);
+    assert_eq!(tree["tracer"]["max_depth"], 1);
+    let first_bounce = &tree["primary"]["secondary"][0];
+    assert_eq!(first_bounce["traced"], true);
+    let second_bounce = &first_bounce["secondary"][0];
+    assert_eq!(second_bounce["depth"], 2);
+    assert_eq!(second_bounce["end"], "max_depth");
 }

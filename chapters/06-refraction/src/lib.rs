@@ -89,6 +89,24 @@ pub fn refracted_ray(surface: &Surface, direction: Vec3, weight: Color) -> Optio
     })
 }
 
+/// The secondary rays of a hit on a surface that may be transparent: an
+/// opaque one sends chapter 5's mirror ray of its reflectance; a
+/// transparent one [`split`]s the light between the mirror ray and the
+/// refracted ray.
+pub fn glass_secondary_rays(surface: &Surface, incoming: &Ray) -> [Option<Secondary>; 2] {
+    if surface.material.transparency == 0.0 {
+        return [
+            mirror_ray(surface, incoming, surface.material.reflectance),
+            None,
+        ];
+    }
+    let split = split(surface, incoming);
+    let refraction = split
+        .refracted
+        .and_then(|(weight, direction)| refracted_ray(surface, direction, weight));
+    [mirror_ray(surface, incoming, split.reflected), refraction]
+}
+
 /// This chapter's tracer: mirrors and transparent materials, with chapter
 /// 5's fixed depth.
 #[derive(Debug, Clone, Copy)]
@@ -98,14 +116,7 @@ pub struct Glass {
 
 impl Whitted for Glass {
     fn secondary_rays(&self, surface: &Surface, incoming: &Ray) -> [Option<Secondary>; 2] {
-        if surface.material.transparency == 0.0 {
-            return self.mirrors.secondary_rays(surface, incoming);
-        }
-        let split = split(surface, incoming);
-        let refraction = split
-            .refracted
-            .and_then(|(weight, direction)| refracted_ray(surface, direction, weight));
-        [mirror_ray(surface, incoming, split.reflected), refraction]
+        glass_secondary_rays(surface, incoming)
     }
 
     fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {

@@ -4,8 +4,8 @@ pub mod ray_tree;
 
 pub use ch06_refraction::{
     Camera, Glass, Hit, Mirrors, Path, Ray, Secondary, SecondaryKind, ShadowStart, Surface,
-    Whitted, World, closest_hit, lambert, offset_origin, reflect, refract, render, render_whitted,
-    scene_files, schlick, shade, toolkit, trace, workbench,
+    Whitted, World, closest_hit, glass_secondary_rays, lambert, offset_origin, reflect, refract,
+    render, render_whitted, scene_files, schlick, shade, toolkit, trace, workbench,
 };
 
 use toolkit::{Color, Image, Scene, Stats};
@@ -61,13 +61,9 @@ pub struct Tracer {
 }
 
 impl Whitted for Tracer {
+    /// Chapter 6's: the mirror ray, and at glass the refracted ray.
     fn secondary_rays(&self, surface: &Surface, incoming: &Ray) -> [Option<Secondary>; 2] {
-        let glass = Glass {
-            mirrors: Mirrors {
-                max_depth: self.termination.max_depth,
-            },
-        };
-        glass.secondary_rays(surface, incoming)
+        glass_secondary_rays(surface, incoming)
     }
 
     /// A ray at `depth` (1 for the first bounce) on a path of `weight` may

@@ -35,6 +35,19 @@ pub struct ChapterEntry {
     /// A crate beside the chain of chapters rather than a step of it.
     #[serde(default)]
     pub companion: bool,
+    /// The `[trace]` criteria it teaches its tracer to end paths by.
+    #[serde(default)]
+    pub ends_paths: Vec<Criterion>,
+}
+
+/// A `[trace]` criterion that ends a path of rays before it hits nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Criterion {
+    /// More bounces than `max_depth` (chapter 5).
+    MaxDepth,
+    /// A path's weight below `min_weight` in every channel (chapter 7).
+    MinWeight,
 }
 
 /// A chapter's reference picture for `workbook verify`.
@@ -104,14 +117,34 @@ impl ChapterEntry {
     /// The effects its tracer can simulate: those that it and every chapter
     /// before it introduce. (A companion's are those of the chain up to it.)
     pub fn effects(&self) -> Effects {
+        self.up_to_here()
+            .flat_map(|c| c.introduces.iter().copied())
+            .fold(Effects::NONE, Effects::with)
+    }
+
+    /// Does its tracer end paths by `criterion`: does it or a chapter
+    /// before it teach it?
+    pub fn ends_paths_by(&self, criterion: Criterion) -> bool {
+        self.up_to_here().any(|c| c.ends_paths.contains(&criterion))
+    }
+
+    /// The entries of the manifest up to this one, itself included.
+    fn up_to_here(&self) -> impl Iterator<Item = &'static ChapterEntry> {
         let upto = all()
             .iter()
             .position(|c| c == self)
             .expect("an entry of the manifest");
-        all()[..=upto]
+        all()[..=upto].iter()
+    }
+
+    /// The first chapter whose tracer ends paths by `criterion`.
+    pub fn introducing_criterion(criterion: Criterion) -> &'static ChapterEntry {
+        all()
             .iter()
-            .flat_map(|c| c.introduces.iter().copied())
-            .fold(Effects::NONE, Effects::with)
+            .find(|c| c.ends_paths.contains(&criterion))
+            .unwrap_or_else(|| {
+                panic!("no chapter in chapters/chapters.toml ends paths by {criterion:?}")
+            })
     }
 }
 
@@ -191,5 +224,16 @@ mod tests {
         assert_eq!(effects("08-bvh"), Effects::ALL);
         assert_eq!(introducing(Effect::Refraction).folder, "06-refraction");
         assert_eq!(find("ch05-reflection").unwrap().number(), 5);
+    }
+
+    #[test]
+    fn depth_ends_paths_from_chapter_5_and_weight_from_chapter_7() {
+        let ends = |folder, criterion| find(folder).unwrap().ends_paths_by(criterion);
+        assert!(!ends("04-shadows", Criterion::MaxDepth));
+        assert!(!ends("04b-forward", Criterion::MaxDepth));
+        assert!(ends("05-reflection", Criterion::MaxDepth));
+        assert!(!ends("06-refraction", Criterion::MinWeight));
+        assert!(ends("07-termination", Criterion::MinWeight));
+        assert!(ends("08-bvh", Criterion::MaxDepth) && ends("08-bvh", Criterion::MinWeight));
     }
 }

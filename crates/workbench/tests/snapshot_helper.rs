@@ -47,11 +47,6 @@ fn verdict(expected: &Image, actual: &Image) -> Verdict {
 }
 
 #[test]
-fn identical_pictures_pass() {
-    assert!(verdict(&disc(0.0, false, 0.0), &disc(0.0, false, 0.0)).passed());
-}
-
-#[test]
 fn last_bit_differences_pass() {
     // f32 has 24 bits: relative differences of a few 1e-7 are the last bits.
     let verdict = verdict(&disc(0.0, false, 0.0), &disc(0.0, false, 4e-7));

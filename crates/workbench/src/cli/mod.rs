@@ -1,7 +1,7 @@
 //! The command line every chapter binary shares: parse, load, render, write, report.
 //!
 //! A chapter's `main.rs` names its chapter and its render function and hands
-//! both to [`run`]; everything a student's binary needs besides the lesson
+//! both to [`run_or_explain`]; everything a student's binary needs besides the lesson
 //! (arguments, errors, progress, atomic output, statistics) lives here.
 
 use std::path::PathBuf;
@@ -10,7 +10,7 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use crate::chapters::{self, ChapterEntry};
+use crate::chapters::{self, ChapterEntry, Criterion};
 use crate::ray_tree::{RayNode, TracerInfo};
 use ch00_toolkit::{Image, Scene, Stats};
 use scene_files::SceneError;
@@ -77,6 +77,17 @@ pub struct RenderArgs {
     #[arg(long, value_parser = samples)]
     pub samples: Option<u32>,
 
+    /// Bounces a path may make, instead of the scene's [trace] max_depth:
+    /// more show mirrors in mirrors, fewer render faster (chapter 5 on).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=64))]
+    pub max_depth: Option<u32>,
+
+    /// End a path when its weight (the product of the weights along it)
+    /// falls below W in every channel, instead of the scene's [trace]
+    /// min_weight; 0 never ends a path early (chapter 7 on).
+    #[arg(long, value_name = "W", value_parser = weight)]
+    pub min_weight: Option<f32>,
+
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
@@ -130,7 +141,36 @@ impl RenderArgs {
         let height = self.height.unwrap_or(scene.image.height);
         let mut scene = scene.with_size(width, height);
         scene.image.samples = self.samples.unwrap_or(scene.image.samples);
+        scene.trace.max_depth = self.max_depth.unwrap_or(scene.trace.max_depth);
+        scene.trace.min_weight = self.min_weight.unwrap_or(scene.trace.min_weight);
         Ok((scene, name))
+    }
+
+    /// Refuses `--max-depth` and `--min-weight` where the chapter's tracer
+    /// has no such criterion: before chapter 5 no path goes on after its
+    /// first hit, and before chapter 7 no weight ends one.
+    pub fn check_criteria(&self, chapter: &Chapter) -> Result<(), String> {
+        let given = [
+            (Criterion::MaxDepth, "--max-depth", self.max_depth.is_some()),
+            (
+                Criterion::MinWeight,
+                "--min-weight",
+                self.min_weight.is_some(),
+            ),
+        ];
+        for (criterion, option, given) in given {
+            if given && !chapter.entry().ends_paths_by(criterion) {
+                let first = ChapterEntry::introducing_criterion(criterion);
+                return Err(format!(
+                    "{option}: chapter {} ({}) ends no path by it; chapter {} ({}) introduces it",
+                    chapter.entry().number(),
+                    chapter.entry().folder,
+                    first.number(),
+                    first.path().display()
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// Where the picture goes.
@@ -211,6 +251,14 @@ impl std::fmt::Display for EffectPlan {
     }
 }
 
+/// Parses `--min-weight`: a weight from 0 to 1.
+fn weight(text: &str) -> Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(w) if (0.0..=1.0).contains(&w) => Ok(w),
+        _ => Err(format!("expected a number from 0 to 1, found {text:?}")),
+    }
+}
+
 /// Parses `--samples`: a square number from 1 to 1024.
 fn samples(text: &str) -> Result<u32, String> {
     match text.parse::<u32>() {
@@ -243,26 +291,11 @@ pub struct Rendered {
     pub seconds: Duration,
 }
 
-/// Loads the scene, renders it with `render`, writes the PNG and reports.
-/// `render(scene, on_row)` must call `on_row` once per finished row.
-pub fn run(
-    chapter: &Chapter,
-    args: &RenderArgs,
-    render: impl Fn(&Scene, &(dyn Fn() + Sync)) -> (Image, Stats) + Sync,
-) -> ExitCode {
-    end_quietly_when_output_closes();
-    if args.pixel.is_some() {
-        eprintln!(
-            "error: this binary prints no ray trees; every chapter's binary does, e.g. cargo run -p ch07-termination -- --pixel X,Y"
-        );
-        return ExitCode::FAILURE;
-    }
-    run_loaded(chapter, args, args.load_scene(chapter), render)
-}
-
-/// [`run`], or with `--pixel X,Y` the pixel's ray tree instead of a
-/// picture: `explain(scene, pixel)` traces the pixel's ray as the chapter
-/// does and says what its tracer does and what it saw.
+/// Loads the scene, renders it with `render`, writes the PNG and reports;
+/// `render(scene, on_row)` must call `on_row` once per finished row. Or,
+/// with `--pixel X,Y`, prints the pixel's ray tree instead of a picture:
+/// `explain(scene, pixel)` traces the pixel's ray as the chapter does and
+/// says what its tracer does and what it saw.
 pub fn run_or_explain(
     chapter: &Chapter,
     args: &RenderArgs,
@@ -270,6 +303,10 @@ pub fn run_or_explain(
     explain: impl Fn(&Scene, Pixel) -> (TracerInfo, RayNode),
 ) -> ExitCode {
     end_quietly_when_output_closes();
+    if let Err(e) = args.check_criteria(chapter) {
+        eprintln!("error: {e}");
+        return ExitCode::FAILURE;
+    }
     let loaded = args.load_scene(chapter);
     match args.pixel {
         None => run_loaded(chapter, args, loaded, render),
@@ -304,7 +341,7 @@ fn planned(
     Some((plan, scene, name))
 }
 
-/// [`run`] once the scene is loaded (or failed to load): `loaded` is the
+/// [`run_or_explain`] once the scene is loaded (or failed to load): `loaded` is the
 /// scene and its name.
 fn run_loaded(
     chapter: &Chapter,
@@ -389,7 +426,7 @@ pub fn report(chapter: &Chapter, scene: &str, out: &std::path::Path, r: &Rendere
 /// tools then, so its next `println!` would panic ("failed printing to
 /// stdout: Broken pipe"). Restoring the signal's default action makes the
 /// process end silently instead, like `cat` or `grep`. Every binary calls
-/// this first (chapter binaries through [`run`]).
+/// this first (chapter binaries through [`run_or_explain`]).
 pub fn end_quietly_when_output_closes() {
     #[cfg(unix)]
     // SAFETY: signal() only sets the process's action for SIGPIPE back to

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use ch04_forward::{
+use ch04b_forward::{
     Run, Settings, backward_image, check_scene, expected_image, measure, rays_needed, strip,
 };
 use ch04_shadows::toolkit::{Image, Scene};
@@ -15,7 +15,7 @@ use ch04_shadows::workbench::compare::{psnr, rmse_clamped};
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 
-const DEFAULT_SCENE_PATH: &str = "chapters/04-forward/scenes/forward.toml";
+const DEFAULT_SCENE_PATH: &str = "chapters/04b-forward/scenes/forward.toml";
 const DEFAULT_SCENE: &str = include_str!("../scenes/forward.toml");
 
 /// The quality to reach: a noise of one step of the 8-bit picture.
@@ -32,7 +32,7 @@ const TARGET: f64 = 1.0 / 255.0;
 #[command(version)]
 struct Args {
     /// Scene file (TOML): diffuse materials, point lights, black background.
-    /// Without it, chapters/04-forward/scenes/forward.toml.
+    /// Without it, chapters/04b-forward/scenes/forward.toml.
     scene: Option<PathBuf>,
 
     /// Photons to emit, over all lights (1e6 and 1000000 both work). This

@@ -2,7 +2,7 @@
 //! 4's backward one, and the share of photons that make it falls with the
 //! aperture.
 
-use ch04_forward::{
+use ch04b_forward::{
     Forward, Sensor, Settings, backward_image, check_scene, cosine_hemisphere, expected_image,
     trace_forward, uniform_sphere,
 };
