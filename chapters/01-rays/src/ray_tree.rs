@@ -3,19 +3,25 @@
 
 use crate::toolkit::{Scene, Vec3};
 use crate::workbench::cli::Pixel;
+use crate::workbench::ray_tree::record::{TreeRay, ray_node};
 use crate::workbench::ray_tree::{End, RayKind, RayNode, TracerInfo};
 use crate::{Camera, Ray, sky};
+
+impl TreeRay for Ray {
+    fn origin(&self) -> Vec3 {
+        self.origin
+    }
+
+    fn direction(&self) -> Vec3 {
+        self.direction
+    }
+}
 
 /// The ray the tree follows: the scene camera's primary ray through the
 /// pixel's centre (one ray, whatever the scene's samples).
 pub fn primary_ray(scene: &Scene, pixel: Pixel) -> Ray {
     let camera = Camera::new(&scene.camera, scene.image.width, scene.image.height);
     camera.primary_ray(pixel.x, pixel.y)
-}
-
-/// A tree node for `ray`, not yet followed.
-pub fn ray_node(kind: RayKind, depth: u32, ray: &Ray) -> RayNode {
-    RayNode::new(kind, depth, ray.origin, ray.direction)
 }
 
 /// Chapter 1's tree: the primary ray and the sky colour it sees.
@@ -25,9 +31,4 @@ pub fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
     node.end = Some(End::NoHit);
     node.color = Some(sky(&ray).to_array());
     (TracerInfo::default(), node)
-}
-
-/// A colour (or vector) as the tree stores it.
-pub fn rgb(v: Vec3) -> [f32; 3] {
-    v.to_array()
 }

@@ -3,7 +3,7 @@
 //! indices and η, total internal reflection, Schlick's Fresnel term and the
 //! weights of the mirror and refracted rays.
 
-pub use ch05_reflection::ray_tree::{explain_with, rgb};
+pub use ch05_reflection::ray_tree::{Lesson, explain_with};
 
 use crate::toolkit::{Color, Scene};
 use crate::workbench::cli::Pixel;
@@ -46,32 +46,27 @@ pub fn explain_split(surface: &Surface, incoming: &Ray) -> Option<RefractionNode
         total_internal_reflection: shares.refracted.is_none(),
         fresnel,
         transparency: material.transparency,
-        reflectance: rgb(material.reflectance),
-        reflected_weight: rgb(shares.reflected),
-        refracted_weight: shares.refracted.map(|(w, _): (Color, _)| rgb(w)),
+        reflectance: material.reflectance.to_array(),
+        reflected_weight: shares.reflected.to_array(),
+        refracted_weight: shares.refracted.map(|(w, _): (Color, _)| w.to_array()),
     })
 }
 
-/// Chapter 6's tree: its glass and mirrors, to the scene's `max_depth`.
+/// Chapter 6's tree: chapter 5's, with the split at glass.
 pub fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
-    let tracer = Glass {
-        mirrors: Mirrors {
-            max_depth: scene.trace.max_depth,
-        },
+    let mirrors = Mirrors {
+        max_depth: scene.trace.max_depth,
     };
-    let info = TracerInfo {
-        hits: true,
-        lights: true,
-        shadow_rays: true,
-        max_depth: Some(scene.trace.max_depth),
-        min_weight: None,
-    };
-    explain_with(
-        &tracer,
+    let tracer = Glass { mirrors };
+    let world = &scene.objects[..];
+    let lesson = Lesson {
         scene,
-        &scene.objects[..],
-        pixel,
-        info,
-        explain_split,
+        tracer: &tracer,
+        world,
+        split: explain_split,
+    };
+    (
+        TracerInfo::recursive(mirrors.max_depth, None),
+        explain_with(&lesson, pixel),
     )
 }

@@ -2,10 +2,12 @@
 //! one hit, how the lights lit it and why its path ended, printed as an
 //! indented tree (`--pixel X,Y`) or written as JSON (`--pixel X,Y --json`).
 //!
-//! The chapters fill in the tree (each in its own `ray_tree.rs`, watching
-//! its own tracer at work); this module holds what is shared: the data
-//! model, which is also the JSON schema documented in the workbook's
-//! README ("A pixel's ray tree"), and the text printing. Every vector and
+//! The chapters fill in the tree, each in a thin `ray_tree.rs` that lets
+//! [`record`] watch its own tracer at work; this module holds the rest: the
+//! data model, which is also the JSON schema documented in the workbook's
+//! README ("A pixel's ray tree"), the nodes made from a chapter's values
+//! (`nodes.rs`), the recorder and the tree built from its record
+//! ([`record`]), and the text printing (`text.rs`). Every vector and
 //! colour is an array of three numbers, so that a tracer in any language
 //! can write the same JSON and a student can compare the two trees.
 
@@ -14,8 +16,11 @@ use serde::{Deserialize, Serialize};
 use ch00_toolkit::Vec3;
 use scene_files::{Light, Shape};
 
+mod nodes;
+pub mod record;
 mod text;
 
+pub use nodes::{Arriving, HitFacts, Terms};
 pub use text::{num, vec3};
 
 /// The whole tree of one pixel, as `--pixel X,Y --json` writes it.
