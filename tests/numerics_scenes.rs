@@ -2,7 +2,7 @@
 //! translation, reflection and refraction directions, lights on surfaces,
 //! mirror corridors, and no NaN in any scene of the repository.
 //!
-//! (The intersection cases are in numerics_hits.rs; shadow acne is in
+//! (The intersection cases are in numerics_hits/; shadow acne is in
 //! chapter 4's tests, degenerate input in bad_scenes.rs.)
 
 mod common;
@@ -210,7 +210,7 @@ fn holes(
 /// corner (shared by six triangles) sits on the centre pixel's ray and the
 /// three edges from it run through pixel centres. No pixel inside the
 /// silhouette may see the background. (Möller–Trumbore's cracks, which
-/// this would catch, are shown ray by ray in numerics_hits.rs.)
+/// this would catch, are shown ray by ray in numerics_hits/triangles.rs.)
 #[test]
 fn a_closed_mesh_shows_no_background_inside_its_silhouette() {
     let cube = cube();

@@ -6,12 +6,12 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use ch04b_forward::{
-    Run, Settings, backward_image, check_scene, expected_image, measure, rays_needed, strip,
-};
 use ch04_shadows::toolkit::{Image, Scene};
 use ch04_shadows::workbench::cli::progress_bar;
 use ch04_shadows::workbench::compare::{psnr, rmse_clamped};
+use ch04b_forward::{
+    Run, Settings, backward_image, check_scene, expected_image, measure, rays_needed, strip,
+};
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 

@@ -2,14 +2,14 @@
 //! 4's backward one, and the share of photons that make it falls with the
 //! aperture.
 
-use ch04b_forward::{
-    Forward, Sensor, Settings, backward_image, check_scene, cosine_hemisphere, expected_image,
-    trace_forward, uniform_sphere,
-};
 use ch04_shadows::scene_files;
 use ch04_shadows::toolkit::{Color, Image, Scene, Vec3};
 use ch04_shadows::workbench::compare::{psnr, rmse, rmse_clamped};
 use ch04_shadows::{CHAPTER, Camera};
+use ch04b_forward::{
+    Forward, Sensor, Settings, backward_image, check_scene, cosine_hemisphere, expected_image,
+    trace_forward, uniform_sphere,
+};
 
 /// A close-up of a sphere on a floor under one point light, 8×6 pixels: the
 /// camera is near, so that many photons reach it and the tests stay fast.

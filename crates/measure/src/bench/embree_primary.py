@@ -6,7 +6,7 @@ python3):
 
     python3 embree_primary.py FOLDER RUNS [PROCESSES]
 
-FOLDER holds raw little-endian f32 files, written by src/bench/primary.rs:
+FOLDER holds raw little-endian f32 files, written by src/bench/primary/embree.rs:
 
     triangles.f32   n triangles × 3 corners × (x, y, z), in the scene's order
     origins.f32     m rays × (x, y, z)

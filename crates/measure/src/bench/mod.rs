@@ -8,7 +8,7 @@
 //! against the number of primitives (`scaling.rs`), for the SPD scenes and for
 //! larger sphereflakes and Sierpinski tetrahedra made here (`fractals.rs`).
 //! `--primary` times only the tracing of the primary rays, per thread,
-//! against Embree 4 on the same rays (`primary.rs`).
+//! against Embree 4 on the same rays (`primary/`).
 //!
 //! The measuring helpers, [`median`] and the Markdown [`table`], serve
 //! `raybook accuracy` and `cargo bench` too.

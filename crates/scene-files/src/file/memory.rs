@@ -18,7 +18,7 @@
 //! So loading peaks near text + 128 bytes per object, and building the BVH
 //! near 128 + 260 once the text is gone. Measured peak RSS of `raybook
 //! render` (whole process) on scenes from `cargo run --release -p
-//! ch00-toolkit --example sphere_cloud`: 762 MiB for 2 million spheres,
+//! scene-files --example sphere_cloud`: 762 MiB for 2 million spheres,
 //! about 400 bytes per sphere, its 106 bytes of text included (563 MiB
 //! when a vector was 12 bytes, not 16). The estimate below adds a margin.
 

@@ -8,7 +8,7 @@ use std::io::{self, Write};
 /// under an ambient and a point light. The same `count` gives the same file;
 /// each sphere's table is about 90 bytes.
 ///
-/// `cargo run --release -p ch00-toolkit --example sphere_cloud -- 2000000 big.toml`
+/// `cargo run --release -p scene-files --example sphere_cloud -- 2000000 big.toml`
 pub fn write_sphere_cloud(mut out: impl Write, count: usize) -> io::Result<()> {
     out.write_all(HEAD.as_bytes())?;
     let mut state = 1u64;

@@ -138,7 +138,7 @@ pub(super) mod tests {
     /// What `cargo test -p ch03-lambert` prints with `lambert` taken out (shortened).
     pub const FAILING: &str = r#"
    Compiling ch03-lambert v0.1.0 (/w/chapters/03-lambert)
-     Running tests/chapter03.rs (target/debug/deps/chapter03-1234)
+     Running tests/chapter03/main.rs (target/debug/deps/chapter03-1234)
 
 running 3 tests
 test spot_factor_is_one_inside_zero_outside_and_smooth_between ... ok
@@ -204,7 +204,7 @@ test result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; fini
 
     #[test]
     fn a_failed_assertion_is_read_with_its_sides() {
-        let output = "thread 'the_lectures_worked_example' (1740) panicked at tests/chapter02.rs:60:5:\n\
+        let output = "thread 'the_lectures_worked_example' (1740) panicked at tests/chapter02/spheres.rs:14:5:\n\
                       assertion `left == right` failed: t² − 4t + 3 = 0 has the roots 1 and 3\n  \
                       left: Some((0.5, 1.5))\n right: Some((1.0, 3.0))\nstack backtrace:\n";
         let parsed = parse(output);

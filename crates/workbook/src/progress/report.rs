@@ -242,7 +242,7 @@ mod tests {
 
     #[test]
     fn a_written_exercise_that_fails_is_explained_by_its_tests_message() {
-        let failing = "thread 'the_lectures_worked_example' (7) panicked at tests/chapter02.rs:60:5:\n\
+        let failing = "thread 'the_lectures_worked_example' (7) panicked at tests/chapter02/spheres.rs:14:5:\n\
                        assertion `left == right` failed: the roots are 1 and 3\n  \
                        left: None\n right: Some((1.0, 3.0))\n\
                        test result: FAILED. 3 passed; 1 failed; 0 ignored\n";

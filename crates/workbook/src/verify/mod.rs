@@ -62,7 +62,7 @@ impl Reference {
         )
     }
 
-    /// The object map, if there is one and it can be read (tests/verify.rs
+    /// The object map, if there is one and it can be read (tests/verify/object_maps.rs
     /// checks that every reference has a current one).
     pub fn object_map(&self) -> Option<ObjectMap> {
         ObjectMap::parse(self.objects?).ok()

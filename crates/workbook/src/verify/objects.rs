@@ -3,8 +3,8 @@
 //! that `workbook verify` can say which objects a wrong region covers
 //! without depending on a chapter's tracer.
 //!
-//! The maps are written and kept current by tests/verify.rs, which renders
-//! them with chapter 2's closest hit (`RAYBOOK_WRITE_OBJECT_MAPS=1 cargo test
+//! The maps are written and kept current by crates/workbook/tests/verify/object_maps.rs, which renders
+//! them with chapter 2's closest hit (`RAYBOOK_WRITE_OBJECT_MAPS=1 cargo test -p workbook
 //! --test verify` rewrites them).
 //!
 //! The format, one item a line (`#` starts a comment):
@@ -63,7 +63,7 @@ impl ObjectMap {
             "# Which object each pixel of {picture} shows: the first one hit by the ray\n\
              # through the pixel's centre, or - for none. Objects are numbered from 0 in\n\
              # the order of the scene file's [[objects]]. Rows are runs OBJECT*COUNT.\n\
-             # Written by tests/verify.rs: RAYBOOK_WRITE_OBJECT_MAPS=1 cargo test --test verify\n\
+             # Written by crates/workbook/tests/verify/object_maps.rs: RAYBOOK_WRITE_OBJECT_MAPS=1 cargo test -p workbook --test verify\n\
              size {} {}\n",
             self.width, self.height
         );

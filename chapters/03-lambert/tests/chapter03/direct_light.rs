@@ -1,0 +1,160 @@
+//! Direct light: the lights added up channel by channel, ambient light once,
+//! and `visible` asked only about the lights that could add something.
+
+use ch03_lambert::toolkit::{Color, Vec3};
+use ch03_lambert::{Incoming, Surface, always_visible, closest_hit, direct_light, lambert};
+
+use super::{ALBEDO, close, floor_with};
+
+/// Light A: straight above at distance 4, intensity 16: irradiance 1, n·l = 1.
+const LIGHT_A: &str = r#"
+    [[lights]]
+    type = "point"
+    position = [0, 4, 0]
+    intensity = 16
+"#;
+
+/// Light B: at (3, 4, 0), distance 5, intensity 25: irradiance its colour
+/// (1, 0.5, 0.25), n·l = 0.8.
+const LIGHT_B: &str = r#"
+    [[lights]]
+    type = "point"
+    position = [3, 4, 0]
+    color = [1, 0.5, 0.25]
+    intensity = 25
+"#;
+
+/// Light C: below the floor, behind the surface the eye sees.
+const LIGHT_C: &str = r#"
+    [[lights]]
+    type = "point"
+    position = [0, -2, 0]
+    intensity = 100
+"#;
+
+/// A spot light whose cone points away from the floor: dark there.
+const SPOT_AWAY: &str = r#"
+    [[lights]]
+    type = "spot"
+    position = [0, 4, 0]
+    direction = [1, 0, 0]
+    intensity = 100
+    inner_angle = 10
+    outer_angle = 20
+"#;
+
+const AMBIENTS: &str = r#"
+    [[lights]]
+    type = "ambient"
+    color = [0.1, 0.2, 0.3]
+    [[lights]]
+    type = "ambient"
+    color = [0.05, 0.05, 0.05]
+"#;
+
+/// A `reflect` for `direct_light`, given the surface.
+type Reflect<'a> = &'a dyn Fn(&Surface, &Incoming) -> Color;
+
+/// Chapter 3's direct light at the floor's point (0, 0, 0), with these
+/// `visible` and `reflect` (None: Lambert's law).
+fn light_at_floor(
+    lights: &str,
+    visible: impl FnMut(&Surface, &Incoming) -> bool,
+    reflect: Option<Reflect>,
+) -> Color {
+    let (scene, ray) = floor_with(lights);
+    let hit = closest_hit(&scene.objects, &ray, 0.0, f32::INFINITY).unwrap();
+    let surface = Surface::new(&scene, hit, &ray);
+    match reflect {
+        None => direct_light(&scene, &surface, visible, |i| lambert(&surface, i)),
+        Some(f) => direct_light(&scene, &surface, visible, |i| f(&surface, i)),
+    }
+}
+
+#[test]
+fn ambient_light_adds_albedo_times_its_colour_once() {
+    // Two ambient lights, point lights whose reflection is zero: only the
+    // ambient light is left.
+    let lights = format!("{AMBIENTS}{LIGHT_A}{LIGHT_B}");
+    let got = light_at_floor(&lights, always_visible, Some(&|_, _| Color::ZERO));
+    let want = ALBEDO * Vec3::new(0.15, 0.25, 0.35);
+    assert!(
+        close(got, want),
+        "each ambient light adds albedo × its colour, once: {want}, got {got} \
+         (0: ambient forgotten; {}: ambient added once per light)",
+        4.0 * want
+    );
+}
+
+#[test]
+fn the_lights_add_up_channel_by_channel() {
+    let lights = format!("{AMBIENTS}{LIGHT_A}{LIGHT_B}");
+    let ambient = ALBEDO * Vec3::new(0.15, 0.25, 0.35);
+    let a = ALBEDO;
+    let b = ALBEDO * Vec3::new(1.0, 0.5, 0.25) * 0.8;
+    let got = light_at_floor(&lights, always_visible, None);
+    assert!(
+        close(got, ambient + a + b),
+        "ambient + light A + light B = {}, got {got} (multiplied instead of added: {})",
+        ambient + a + b,
+        ambient * a * b
+    );
+}
+
+#[test]
+fn a_light_that_is_not_visible_adds_nothing() {
+    let lights = format!("{LIGHT_A}{LIGHT_B}");
+    // Light B (the one off to the side, +x) is blocked.
+    let got = light_at_floor(&lights, |_, i| i.direction.x <= 0.0, None);
+    assert!(
+        close(got, ALBEDO),
+        "`visible` says light B is blocked, so only light A adds: {ALBEDO}, got {got}"
+    );
+}
+
+#[test]
+fn a_light_behind_the_surface_is_skipped_whatever_reflect_says() {
+    // A `reflect` that does not clamp: n·l itself, negative for light C.
+    let lights = format!("{LIGHT_A}{LIGHT_C}");
+    let n_dot_l: Reflect = &|s, i| Color::splat(s.normal.dot(i.direction));
+    let got = light_at_floor(&lights, always_visible, Some(n_dot_l));
+    assert!(
+        close(got, Color::ONE),
+        "light A adds n·l = 1, light C behind the surface must be skipped (n·l ≤ 0), \
+         got {got} (0: light C subtracted its n·l = −1)"
+    );
+}
+
+#[test]
+fn visible_is_asked_only_about_lights_that_could_add_something() {
+    let lights = format!("{AMBIENTS}{LIGHT_A}{LIGHT_B}{LIGHT_C}{SPOT_AWAY}");
+    let mut asked = Vec::new();
+    light_at_floor(
+        &lights,
+        |_, i| {
+            asked.push(i.direction);
+            true
+        },
+        None,
+    );
+    assert_eq!(
+        asked.len(),
+        2,
+        "visible must be asked about lights A and B only (chapter 4 traces a shadow ray \
+         for each question), not about ambient light, light C behind the surface or a \
+         spot whose cone misses: asked about {asked:?}"
+    );
+    let mut asked = 0;
+    light_at_floor(
+        &lights,
+        |_, _| {
+            asked += 1;
+            true
+        },
+        Some(&|_, _| Color::ZERO),
+    );
+    assert_eq!(
+        asked, 0,
+        "reflect gives zero for every light (a black mirror): visible must not be asked"
+    );
+}

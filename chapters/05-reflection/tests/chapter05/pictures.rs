@@ -1,0 +1,129 @@
+//! The pictures: two facing mirrors where every pixel is known, the depth
+//! limit, and the snapshots.
+
+use ch05_reflection::scene_files;
+use ch05_reflection::toolkit::{Color, Image, Scene, Stats, Vec3};
+use ch05_reflection::workbench::snapshot::assert_image;
+use ch05_reflection::{CHAPTER, render_mirrors};
+
+use super::close;
+use super::recursion::assert_the_recursion_is_sound;
+
+/// Two facing mirrors (z = ±2), the camera between them looking askew: every
+/// ray bounces between them until the depth limit ends it. Each hit's local
+/// light is ambient 0.4 × albedo 0.5 = 0.2; each bounce weighs red by 0.5,
+/// green by 0.25 and blue by 0.
+const FACING: &str = r#"
+[camera]
+eye = [0.0, 0.0, 0.0]
+look_at = [0.3, 0.2, -1.0]
+up = [0.0, 1.0, 0.0]
+vfov = 30.0
+
+[image]
+width = 4
+height = 3
+
+[materials.mirror]
+color = [0.5, 0.5, 0.5]
+reflectance = [0.5, 0.25, 0.0]
+
+[[lights]]
+type = "ambient"
+color = [0.4, 0.4, 0.4]
+
+[[objects]]
+type = "plane"
+normal = [0.0, 0.0, 1.0]
+offset = 2.0
+material = "mirror"
+
+[[objects]]
+type = "plane"
+normal = [0.0, 0.0, -1.0]
+offset = 2.0
+material = "mirror"
+"#;
+
+/// The pixel after `bounces` bounces: 0.2 × Σₖ₌₀..bounces reflectanceᵏ.
+fn after(bounces: u32) -> Color {
+    (0..=bounces)
+        .map(|k| 0.2 * Color::new(0.5, 0.25, 0.0).powf(k as f32))
+        .fold(Color::ZERO, |sum, c| sum + c)
+}
+
+/// Renders with chapter 5's tracer, once the recursion is known to end.
+fn render(scene: &Scene) -> (Image, Stats) {
+    assert_the_recursion_is_sound();
+    render_mirrors(scene, || {})
+}
+
+#[test]
+fn max_depth_n_follows_exactly_n_bounces() {
+    for max_depth in 0..=3 {
+        let mut scene = scene_files::parse(FACING, "facing.toml").unwrap();
+        scene.trace.max_depth = max_depth;
+        let (image, stats) = render(&scene);
+        let expected = after(max_depth);
+        for &found in &image.pixels {
+            let hint = if close(found, after(max_depth + 1)) {
+                " That is one bounce too many."
+            } else if max_depth > 0 && close(found, after(max_depth - 1)) {
+                " That is one bounce too few."
+            } else {
+                ""
+            };
+            assert!(
+                close(found, expected),
+                "max_depth = {max_depth} follows exactly {max_depth} bounces: every pixel is \
+                 0.2 × (1 + r + … + r^{max_depth}) with r = (0.5, 0.25, 0), {expected}; found \
+                 {found}.{hint}"
+            );
+        }
+        assert_eq!(
+            stats.reflection,
+            stats.primary * max_depth as u64,
+            "max_depth = {max_depth}: {max_depth} mirror rays per pixel"
+        );
+        assert_eq!(stats.ended_max_depth, stats.primary, "{stats}");
+    }
+}
+
+#[test]
+fn no_reflectance_no_reflection_ray() {
+    let mut scene = CHAPTER.default_scene().unwrap().with_size(80, 60);
+    for m in &mut scene.materials {
+        m.reflectance = Vec3::ZERO;
+    }
+    let (_, stats) = render(&scene);
+    assert_eq!(stats.reflection, 0, "no material reflects: no mirror ray");
+}
+
+fn corridor() -> Scene {
+    scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/corridor.toml")).unwrap()
+}
+
+#[test]
+fn the_corridor_is_ended_by_depth() {
+    let scene = corridor().with_size(40, 30);
+    let (image, stats) = render(&scene);
+    assert!(stats.ended_max_depth > 0, "{stats}");
+    assert!(image.pixels.iter().all(|c| c.is_finite()));
+    // One less bounce allowed, fewer reflection rays.
+    let mut shallower = scene.clone();
+    shallower.trace.max_depth -= 1;
+    let (_, fewer) = render(&shallower);
+    assert!(fewer.reflection < stats.reflection);
+}
+
+#[test]
+fn snapshot_default() {
+    let scene = CHAPTER.default_scene().unwrap().with_size(160, 120);
+    assert_image("05-reflection", "default", &render(&scene).0);
+}
+
+#[test]
+fn snapshot_corridor() {
+    let scene = corridor().with_size(160, 120);
+    assert_image("05-reflection", "corridor", &render(&scene).0);
+}
