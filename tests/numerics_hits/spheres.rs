@@ -95,15 +95,11 @@ fn tangent_ray_touches_once_and_near_misses_are_decided() {
     );
 }
 
-/// The quadratic as first written down (a = d·d, b = 2f·d, c = f·f − r²),
-/// all in f32: the near root, if the discriminant says there is one.
+/// The quadratic as first written down, all in f32 (chapter 2's lecture
+/// method, `sphere_roots_abc`): the near root, if the discriminant says
+/// there is one.
 fn naive_near_root(center: Vec3, radius: f32, ray: &Ray) -> Option<f32> {
-    let f = ray.origin - center;
-    let a = ray.direction.dot(ray.direction);
-    let b = 2.0 * f.dot(ray.direction);
-    let c = f.dot(f) - radius * radius;
-    let discriminant = b * b - 4.0 * a * c;
-    (discriminant >= 0.0).then(|| (-b - discriminant.sqrt()) / (2.0 * a))
+    ch02_hits::sphere_roots_abc(center, radius, ray).map(|(near, _)| near)
 }
 
 /// How the naive formula went wrong on one far tiny sphere.

@@ -13,9 +13,15 @@ pub use snell::{refract, schlick};
 
 use toolkit::{Color, Image, Scene, Stats, Vec3};
 
-/// How light splits at a transparent surface.
+/// How light splits at a transparent surface, and what decided it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Split {
+    /// n₁ and n₂: the index of refraction on the side the ray comes from,
+    /// and on the side it goes into.
+    pub indices: (f32, f32),
+    /// Schlick's Fresnel term R, where the material asks for it and there
+    /// is a refracted ray; `None` otherwise.
+    pub fresnel: Option<f32>,
     /// Weight of the mirror ray (the material's reflectance, plus what
     /// total internal reflection or the Fresnel term sends there).
     pub reflected: Color,
@@ -55,6 +61,8 @@ pub fn split(surface: &Surface, incoming: &Ray) -> Split {
     let Some(direction) = refract(d, surface.normal, n1 / n2) else {
         // Total internal reflection: the transmitted light is reflected too.
         return Split {
+            indices: (n1, n2),
+            fresnel: None,
             reflected: material.reflectance + transparency,
             refracted: None,
         };
@@ -69,24 +77,24 @@ pub fn split(surface: &Surface, incoming: &Ray) -> Split {
         0.0
     };
     Split {
+        indices: (n1, n2),
+        fresnel: material.fresnel.then_some(fresnel),
         reflected: material.reflectance + transparency * fresnel,
         refracted: Some((transparency * (1.0 - fresnel), direction)),
     }
     // END EXERCISE
 }
 
-/// The refracted ray, started just off the surface on the far side; none if
-/// its weight is zero.
+/// The refracted ray, started just off the surface on the far side (where
+/// `direction` goes); none if its weight is zero, as for every secondary ray.
 pub fn refracted_ray(surface: &Surface, direction: Vec3, weight: Color) -> Option<Secondary> {
-    if weight == Color::ZERO {
-        return None;
-    }
-    let origin = offset_origin(&surface.hit, direction);
-    Some(Secondary {
-        ray: Ray { origin, direction },
-        weight,
-        kind: SecondaryKind::Refraction,
-    })
+    let far_side = offset_origin(&surface.hit, direction);
+    let ray = Ray {
+        origin: far_side,
+        direction,
+    };
+    let kind = SecondaryKind::Refraction;
+    (weight != Color::ZERO).then_some(Secondary { ray, weight, kind })
 }
 
 /// The secondary rays of a hit on a surface that may be transparent: an

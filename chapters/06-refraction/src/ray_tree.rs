@@ -8,43 +8,32 @@ pub use ch05_reflection::ray_tree::{Lesson, explain_with};
 use crate::toolkit::{Color, Scene};
 use crate::workbench::cli::Pixel;
 use crate::workbench::ray_tree::{RayNode, RefractionNode, TracerInfo};
-use crate::{Glass, Mirrors, Ray, Surface, refract, schlick, split};
+use crate::{Glass, Mirrors, Ray, Surface, split};
 
-/// How `surface` splits the light of `incoming` between the mirror ray and
-/// the refracted ray, for the tree; `None` for an opaque material (which
-/// the chapter does not split). The weights are the chapter's own
-/// [`split`]; the indices and cosines are worked out again beside it, as
-/// the lecture does, to show where they come from.
+/// How the chapter's own [`split`] shares the light of `incoming` at
+/// `surface` between the mirror ray and the refracted ray: its indices,
+/// its Fresnel term and its weights, as it returned them; `None` for an
+/// opaque material, which the chapter does not split. Only the geometry
+/// comes from the hit: the side the ray meets (entering if it meets the
+/// outside) and cos θ₁ = −n·d with the facing normal.
 pub fn explain_split(surface: &Surface, incoming: &Ray) -> Option<RefractionNode> {
     let material = surface.material;
     if material.transparency == 0.0 {
         return None;
     }
-    let d = incoming.direction;
-    let entering = d.dot(surface.hit.normal) < 0.0;
-    let (n1, n2) = if entering {
-        (1.0, material.ior)
-    } else {
-        (material.ior, 1.0)
-    };
-    let eta = n1 / n2;
-    let cos_theta1 = -surface.normal.dot(d);
     let shares = split(surface, incoming);
-    let fresnel = refract(d, surface.normal, eta)
-        .filter(|_| material.fresnel)
-        .map(|out| {
-            let cos_out = -surface.normal.dot(out);
-            schlick(if n1 <= n2 { cos_theta1 } else { cos_out }, n1, n2)
-        });
+    let (n1, n2) = shares.indices;
+    let eta = n1 / n2;
+    let cos_theta1 = -surface.normal.dot(incoming.direction);
     Some(RefractionNode {
-        entering,
+        entering: incoming.direction.dot(surface.hit.normal) < 0.0,
         n1,
         n2,
         eta,
         cos_theta1,
         sin2_theta2: eta * eta * (1.0 - cos_theta1 * cos_theta1),
         total_internal_reflection: shares.refracted.is_none(),
-        fresnel,
+        fresnel: shares.fresnel,
         transparency: material.transparency,
         reflectance: material.reflectance.to_array(),
         reflected_weight: shares.reflected.to_array(),

@@ -67,8 +67,17 @@ pub struct Written {
     pub regions: Vec<(PathBuf, usize, Region)>,
 }
 
-/// Copies the workspace at `root` into `dir`, with the selected exercise
-/// regions of every `.rs` file taken out (see [`super::hand_out`]).
+/// Files that hold solutions and stay with the teacher: each chapter's
+/// `mistakes.toml` (its classic mistakes are the solutions with one change,
+/// and its `[[lecture]]` entries the lecture's own solutions). The
+/// maintainers' checks read them from the reference.
+pub fn teacher_only(file: &Path) -> bool {
+    file.starts_with("chapters") && file.file_name().is_some_and(|name| name == "mistakes.toml")
+}
+
+/// Copies the workspace at `root` into `dir`, without the files that are
+/// [`teacher_only`], and with the selected exercise regions of every `.rs`
+/// file taken out (see [`crate::regions::hand_out`]).
 ///
 /// A file already in `dir` with the same content is left alone, so that
 /// cargo sees it unchanged and does not rebuild it: writing variants of a
@@ -91,6 +100,9 @@ pub fn write_tree_with(
     let mut written = Written::default();
     let mut ids = BTreeSet::new();
     for file in workspace_files(root)? {
+        if teacher_only(&file) {
+            continue;
+        }
         let from = root.join(&file);
         let bytes = std::fs::read(&from).map_err(|e| format!("{}: {e}", from.display()))?;
         let bytes = if holds_exercises(&file) {

@@ -196,3 +196,78 @@ fn workbook_handout_writes_a_copy_and_refuses_a_folder_in_use() {
     assert!(!again.status.success());
     assert!(String::from_utf8_lossy(&again.stderr).contains("is not empty"));
 }
+
+/// A line as the leak test compares it: trimmed, runs of whitespace made
+/// one space; `None` for a comment, a short line (under 16 characters) or
+/// an exercise's marker call, which are no part of a solution.
+fn solution_line(line: &str) -> Option<String> {
+    let line = line.split_whitespace().collect::<Vec<_>>().join(" ");
+    let code =
+        !line.starts_with("//") && !line.starts_with('#') && !line.contains("solution_begins(");
+    (code && line.chars().count() >= 16).then_some(line)
+}
+
+/// The files of a handout that the leak test reads: every `.rs`, `.toml`,
+/// `.md`, `.txt` and `.json` file outside `target/`, relative to `dir`.
+fn readable_files(dir: &Path) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    let mut folders = vec![dir.to_path_buf()];
+    while let Some(folder) = folders.pop() {
+        for entry in std::fs::read_dir(&folder).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() && path.file_name().is_some_and(|n| n != "target") {
+                folders.push(path);
+            } else if path
+                .extension()
+                .is_some_and(|e| ["rs", "toml", "md", "txt", "json"].iter().any(|x| e == *x))
+            {
+                files.push(path);
+            }
+        }
+    }
+    files
+}
+
+#[test]
+fn no_file_of_a_fresh_handout_holds_half_an_exercises_solution() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("handout-leaks");
+    let _ = std::fs::remove_dir_all(&dir);
+    workbook::handout::write_tree(&root(), &dir, |_| true).unwrap();
+    assert!(
+        !dir.join("chapters/06-refraction/mistakes.toml").exists(),
+        "the chapters' mistakes.toml are the teacher's"
+    );
+    let files: Vec<(PathBuf, BTreeSet<String>)> = readable_files(&dir)
+        .into_iter()
+        .map(|path| {
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            (path, text.lines().filter_map(solution_line).collect())
+        })
+        .collect();
+    let mut leaks = Vec::new();
+    for (_, _, region) in workspace_regions(&root()).unwrap() {
+        let solution: BTreeSet<String> = region
+            .body
+            .iter()
+            .filter_map(|l| solution_line(l))
+            .collect();
+        for (path, lines) in &files {
+            let found: Vec<&String> = solution.intersection(lines).collect();
+            if !solution.is_empty() && 2 * found.len() > solution.len() {
+                let file = path.strip_prefix(&dir).unwrap().display();
+                leaks.push(format!(
+                    "{}: {file} holds {} of its {} solution lines, such as {:?}",
+                    region.id,
+                    found.len(),
+                    solution.len(),
+                    found[0]
+                ));
+            }
+        }
+    }
+    assert!(
+        leaks.is_empty(),
+        "a handout gives solutions away:\n{}",
+        leaks.join("\n")
+    );
+}

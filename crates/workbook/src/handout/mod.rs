@@ -40,6 +40,11 @@ pub struct HandoutArgs {
     /// unnoticed.
     #[arg(long, group = "what")]
     pub check_mistakes: bool,
+
+    /// With --check-mistakes: only the mistakes of the exercises whose id
+    /// starts with this (`ch06-split`, or `ch06` for a whole chapter).
+    #[arg(long, requires = "check_mistakes", value_name = "ID")]
+    pub only: Option<String>,
 }
 
 /// Runs `workbook handout`.
@@ -47,7 +52,7 @@ pub fn main(args: &HandoutArgs) -> ExitCode {
     let result = match &args.dir {
         Some(dir) => write_handout(dir),
         None if args.check => check_handout(),
-        None => check_mistakes(),
+        None => check_mistakes(args.only.as_deref().unwrap_or("")),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -103,13 +108,13 @@ fn check_handout() -> Result<(), String> {
 }
 
 /// Replays every recorded mistake and prints what the tests made of it.
-fn check_mistakes() -> Result<(), String> {
+fn check_mistakes(only: &str) -> Result<(), String> {
     let root = current_workspace()?;
     let check = Check::new(&root)?;
     let mut missed = Vec::new();
     let mut count = 0;
     for (chapter, file) in check::mistakes_files(&root)? {
-        for mistake in &file.mistake {
+        for mistake in file.mistake.iter().filter(|m| m.exercise.starts_with(only)) {
             count += 1;
             let caught = check::replay(&check, chapter, mistake)?;
             let verdict = match &caught {
