@@ -9,7 +9,9 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 pub use workbench::{self, scene_files};
 
-/// A ray r(t) = r0 + t·rd with a unit direction, so t is a distance.
+/// A ray: a half-line from its origin r0 along its direction rd, a unit
+/// vector, so that the parameter t of its points is a distance (README,
+/// section *The ray*).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ray {
     /// r0: where the ray starts.
@@ -28,7 +30,15 @@ impl Ray {
         }
     }
 
-    /// The point r(t) = r0 + t·rd.
+    /// The point r(t) of the ray's line at parameter `t`: the point at
+    /// distance `t` from the origin r0, in the direction rd (derived in the
+    /// README, section *The ray*).
+    ///
+    /// * `t` is any finite number. t = 0 gives the origin itself; a negative
+    ///   t gives a point behind the origin, on the same line (chapter 2 needs
+    ///   those), so `t` is not clamped at 0.
+    /// * `direction` already has length 1 ([`Ray::new`] made it so), so `t`
+    ///   is a distance as it is: nothing to normalise here.
     pub fn at(&self, t: f32) -> Vec3 {
         // EXERCISE(ch01-at): the point of the ray at distance t from its origin
         crate::workbench::exercise::solution_begins("ch01-at");
@@ -55,20 +65,31 @@ pub struct Camera {
 }
 
 impl Camera {
-    /// The camera of a scene for an image of `width` × `height` pixels: its
-    /// frame and the size of its image plane (the README derives both).
+    /// The camera of a scene for an image of `width` × `height` pixels: the
+    /// camera's frame and the size of its image plane, derived in the README,
+    /// sections *The frame* and *The image plane*.
     ///
-    /// * forward = normalise(look_at − eye): from the eye to the centre of
-    ///   the picture.
-    /// * right = normalise(forward × up₀), with up₀ the scene's up: at right
-    ///   angles to both, and to the viewer's right (x right, y up, looking
-    ///   down −z is a right-handed frame, and (−z) × y = x).
-    /// * up = right × forward: the scene's up made perpendicular to forward
-    ///   (it is only a hint when the camera looks up or down), of length 1
-    ///   because right and forward are unit vectors at right angles.
-    /// * half_height = tan(vfov / 2): the ray to the top edge makes half the
-    ///   vertical field of view with forward, on a plane at distance 1.
-    /// * half_width = half_height · width / height, so pixels are square.
+    /// `spec` (the scene's `[camera]`) gives the eye, the point `look_at` it
+    /// looks at, the scene's up up₀ (`spec.up`, of length 1 but only a hint:
+    /// it need not be at right angles to the view) and the vertical field of
+    /// view vfov in **degrees** (`spec.vfov_degrees`, between 0 and 180): the
+    /// angle between the rays through the middles of the picture's top and
+    /// bottom edges. The scene file has already refused a camera whose
+    /// look_at is its eye or whose up₀ lies along the view, so there is no
+    /// degenerate case to handle.
+    ///
+    /// The camera returned has `eye`, `width` and `height` as given, and
+    ///
+    /// * `forward`, `right`, `up`: three vectors of length 1, each at right
+    ///   angles to the other two. forward points from the eye towards
+    ///   look_at. right points to the viewer's right, so the picture is not
+    ///   mirrored (a camera looking down −z with y up has +x on its right).
+    ///   up lies on up₀'s side of the picture, so it is not upside down.
+    /// * `half_height`, `half_width`: half the height and half the width of
+    ///   the image plane that lies one unit in front of the eye, along
+    ///   forward. The rays through the middles of its top and bottom edges
+    ///   are vfov apart, and its pixels are square: it is as many times
+    ///   wider than high as the image is.
     pub fn new(spec: &CameraSpec, width: u32, height: u32) -> Camera {
         // EXERCISE(ch01-frame): the camera's unit frame (forward towards look_at, right to the viewer's right, up at right angles to both) and the image plane's half width and half height at distance 1, from the vertical field of view and the aspect ratio
         crate::workbench::exercise::solution_begins("ch01-frame");
@@ -90,10 +111,25 @@ impl Camera {
         // END EXERCISE
     }
 
-    /// The ray through image position (px, py), measured in pixels from the
-    /// top-left corner of the image (so the centre of pixel (x, y) is at
-    /// (x + 0.5, y + 0.5)). It is cast backwards: from the eye into the
+    /// The ray from the eye through the point of the image plane that lies
+    /// at image position (`px`, `py`), derived in the README, section *The
+    /// ray through a pixel*. It is cast backwards: from the eye into the
     /// scene, the opposite way to the light that makes the picture.
+    ///
+    /// * (`px`, `py`) is measured in pixels from the image's top-left corner,
+    ///   x to the right and y **down**: (0, 0) is the top-left corner,
+    ///   (width, height) the bottom-right one, and the centre of pixel (x, y)
+    ///   is (x + 0.5, y + 0.5). The position is used as it is: no half pixel
+    ///   is added here ([`Camera::primary_ray`] does that), and any position
+    ///   inside the image will do, not only pixel centres (anti-aliasing casts
+    ///   rays through other points of a pixel).
+    /// * The image's corners go to the corners of the image plane, one unit
+    ///   in front of the eye along forward, `half_width` to either side along
+    ///   right and `half_height` above and below along up (the image's top is
+    ///   on up's side). The image's centre goes to the plane's centre, straight
+    ///   along forward, and positions in between go to the plane in proportion.
+    /// * The ray starts at the eye, not on the image plane, and its direction
+    ///   has length 1.
     pub fn ray_through(&self, px: f32, py: f32) -> Ray {
         // EXERCISE(ch01-ray-through): the ray from the eye through the point of the image plane at pixel position (px, py), the image's top-left corner being (0, 0) and its bottom-right (width, height)
         crate::workbench::exercise::solution_begins("ch01-ray-through");

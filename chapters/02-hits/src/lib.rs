@@ -140,10 +140,17 @@ fn largest(p: Vec3) -> f32 {
     p.abs().max_element()
 }
 
-/// The closest hit of a ray over all objects, for t in (t_min, t_max).
+/// The hit of the object that the ray meets first: the smallest t, over
+/// all of `objects`, strictly between `t_min` and `t_max`. Derived in the
+/// README, section *The closest hit*.
 ///
-/// Each object is tested with the nearest hit so far as the upper bound, so
-/// an object behind it is rejected without more work.
+/// * Each object's hits are those of the tracer's test for its shape,
+///   [`intersect`], and the `Hit` returned is the one [`hit_at`] fills in,
+///   with `object` the index of the object in `objects`.
+/// * The nearest object wins wherever it is in the list; for two objects
+///   hit at exactly the same t, the first in the list.
+/// * `None` if the ray meets no object in (t_min, t_max), or `objects` is
+///   empty.
 pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
     // EXERCISE(ch02-closest): the hit of the object met nearest along the ray within (t_min, t_max), as a Hit, or None if the ray meets none
     crate::workbench::exercise::solution_begins("ch02-closest");

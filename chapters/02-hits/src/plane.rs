@@ -3,13 +3,20 @@
 use crate::Ray;
 use crate::toolkit::Vec3;
 
-/// Where the ray meets the plane n·x + d = 0 (n a unit normal), if at a t in
-/// (t_min, t_max).
+/// The distance t at which the ray meets the plane, if t lies strictly
+/// between `t_min` and `t_max`; derived in the README, section *Plane*.
 ///
-/// Put r(t) = r0 + t·rd into the plane equation: n·r0 + t (n·rd) + d = 0, so
-/// t = −(n·r0 + d) / (n·rd). When n·rd = 0 the ray runs parallel to the plane
-/// and there is no single hit; when n·rd is tiny, t may overflow to infinity,
-/// which is no hit either.
+/// * The plane is the set of points x with n·x + d = 0: `normal` is n, of
+///   length 1, and `offset` is d. Which way n faces does not matter: the
+///   plane is hit from either side.
+/// * The ray's direction has length 1, so t is a distance along the ray.
+/// * `None` for a ray parallel to the plane, whether it lies in the plane
+///   or beside it: there is no single hit. A ray so nearly parallel that
+///   its t overflows to infinity (or is not a number) is no hit either.
+/// * `None` when t is not strictly inside (t_min, t_max). A plane behind
+///   the ray has t < 0, and t = t_min is no hit: a ray that starts on the
+///   plane and leaves it does not hit it at t = 0. t = t_max is no hit
+///   either.
 pub fn intersect_plane(
     normal: Vec3,
     offset: f32,
@@ -31,11 +38,12 @@ pub fn intersect_plane(
 /// The point of the plane n·x + d = 0 hit at distance t, put back onto the
 /// plane.
 ///
-/// r0 + t·rd carries the rounding error of a long sum: far from the eye it
-/// can lie a little off the plane, on either side. Moving it along n by its
-/// computed distance from the plane, p − (n·p + d)·n, leaves an error of a
-/// few units in the last place of p's own coordinates. (Chapter 4 starts
-/// shadow rays just off the surface, by an amount that relies on this.)
+/// The ray's point r(t) carries the rounding error of a long sum: far from
+/// the eye it can lie a little off the plane, on either side. Moving it
+/// along n by its computed distance from the plane, p − (n·p + d)·n, leaves
+/// an error of a few units in the last place of p's own coordinates.
+/// (Chapter 4 starts shadow rays just off the surface, by an amount that
+/// relies on this.)
 pub fn plane_point(normal: Vec3, offset: f32, ray: &Ray, t: f32) -> Vec3 {
     let p = ray.at(t);
     p - (normal.dot(p) + offset) * normal

@@ -1,23 +1,29 @@
 //! Ray–sphere intersection: the lecture's quadratic, and its numerically
 //! stable form, which the tracer uses.
 //!
-//! Letters as in the README: the sphere has centre m and radius ρ; the ray is
-//! r(t) = r0 + t·rd; a, b, c are the quadratic's coefficients and nothing else.
+//! Letters as in the README: the sphere has centre m and radius ρ; the ray
+//! has origin r0, unit direction rd and its points r(t); a, b, c are the
+//! quadratic's coefficients and nothing else.
 
 use crate::Ray;
 use crate::toolkit::{DVec3, Vec3};
 
 /// Both distances at which the ray's line meets the sphere, nearest first,
-/// or `None` if it passes by: the lecture's formula, in f32.
+/// or `None` if the line passes by: the lecture's quadratic in t, solved
+/// with the lecture's formula in f32. Derived in the README, section *The
+/// lecture's quadratic*.
 ///
-/// A point x is on the sphere when |x − m|² = ρ². Put in x = r(t) and write
-/// f = r0 − m: (rd·rd)·t² + 2 (f·rd)·t + (f·f − ρ²) = 0, that is
-/// a·t² + b·t + c = 0 with
-///
-/// a = rd·rd, b = 2 f·rd, c = f·f − ρ²,
-///
-/// so t = (−b ± √Δ) / 2a with the discriminant Δ = b² − 4ac: no hit if
-/// Δ < 0, one touching point (a double root) if Δ = 0, two hits if Δ > 0.
+/// * `center` is the centre m and `radius` is ρ > 0. The ray's direction rd
+///   has length 1, so the roots are distances along the ray.
+/// * `Some((t₀, t₁))` with t₀ ≤ t₁: the two real roots of the quadratic,
+///   where the line enters the sphere and where it leaves it. They belong
+///   to the whole line, so either or both may be negative (behind the ray's
+///   origin): choosing among them is [`intersect_sphere`]'s job, not this
+///   function's.
+/// * A line that touches the sphere (discriminant exactly 0) has one double
+///   root, returned twice, `Some((t, t))`: a tangent ray is a hit.
+/// * `None` exactly when the discriminant is negative: the line misses the
+///   sphere. Never roots that are not numbers.
 ///
 /// Right on paper, and for a sphere near the eye; [`sphere_roots`] is the
 /// form that stays right for a small sphere far away.
@@ -42,14 +48,16 @@ pub fn sphere_roots_abc(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f3
 /// so that they stay right for a small sphere far away and for a huge sphere
 /// close by. The tracer uses this one.
 ///
-/// With the lecture's a, b, c (f = r0 − m), each half of
-/// t = (−b ± √Δ) / 2a loses its digits to cancellation in f32:
-/// * Δ = b² − 4ac subtracts two nearly equal large numbers when the sphere is
-///   far away and small (b² ≈ 4ac ≈ 4·distance²). The same number, without
-///   that subtraction: Δ = 4a·(ρ² − |h|²), where h = f − (b / 2a)·rd goes from
-///   the centre to the point of the ray's line closest to it.
-/// * −b ± √Δ subtracts nearly equal numbers for one of the two signs. We
-///   compute the root without cancellation, t₁ = q/a with
+/// With the lecture's f, a, b, c and Δ (README, *The lecture's quadratic*),
+/// both steps of the lecture's formula lose their digits to cancellation in
+/// f32 (README, *When the numbers get hard: the stable quadratic*):
+/// * The discriminant subtracts two nearly equal large numbers when the
+///   sphere is far away and small (both close to 4·distance²). The same
+///   number, without that subtraction: Δ = 4a·(ρ² − |h|²), where
+///   h = f − (b / 2a)·rd goes from the centre to the point of the ray's line
+///   closest to it.
+/// * For one of the two signs, the roots' numerator subtracts nearly equal
+///   numbers. We compute the root without cancellation, t₁ = q/a with
 ///   q = −(b + sign(b)·√Δ) / 2, and get the other from the product of the
 ///   roots, t₀·t₁ = c/a: t₀ = c/q.
 ///
@@ -83,7 +91,19 @@ pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> 
     Some((t0.min(t1), t0.max(t1)))
 }
 
-/// The nearest distance in (t_min, t_max) at which the ray hits the sphere.
+/// The distance at which the ray hits the sphere: of the two roots of its
+/// line (`near` ≤ `far`, from [`sphere_roots`]), the nearest one that lies
+/// strictly between `t_min` and `t_max`. Derived in the README, section
+/// *Which root is the hit?*.
+///
+/// * The roots belong to the whole line: a negative one is behind the
+///   ray's origin. From inside the sphere the near root is behind and the
+///   hit is the far one (the eye sees the sphere's inside).
+/// * Both bounds are strict: a root equal to `t_min` is no hit (a ray that
+///   starts on the sphere and leaves it is not hit at t = 0), nor is one
+///   equal to `t_max`.
+/// * `None` if the line misses the sphere, or if neither root lies in
+///   (t_min, t_max).
 pub fn intersect_sphere(
     center: Vec3,
     radius: f32,
@@ -99,8 +119,8 @@ pub fn intersect_sphere(
 }
 
 /// The quadratic a·t² + b·t + c = 0 of a ray's line and a sphere, in f64,
-/// as [`sphere_roots`] solves it: f = r0 − m, rd and ρ, and a = rd·rd,
-/// b = 2 f·rd, c = f·f − ρ².
+/// as [`sphere_roots`] solves it: the lecture's f, rd, ρ and coefficients
+/// a, b, c (README, *The lecture's quadratic*).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Quadratic {
     pub f: DVec3,
@@ -130,9 +150,10 @@ impl Quadratic {
 
 /// The point of the sphere hit at distance t, put back onto the surface.
 ///
-/// r0 + t·rd carries the rounding error of t, which grows with the distance
-/// travelled; projecting it onto the sphere, m + ρ·(x − m)/|x − m|, leaves
-/// only the error of that short computation (pbrt does the same).
+/// The ray's point r(t) carries the rounding error of t, which grows with
+/// the distance travelled; projecting it onto the sphere,
+/// m + ρ·(x − m)/|x − m|, leaves only the error of that short computation
+/// (pbrt does the same).
 pub fn sphere_point(center: Vec3, radius: f32, ray: &Ray, t: f32) -> Vec3 {
     center + radius * (ray.at(t) - center).normalize()
 }

@@ -9,21 +9,23 @@ use crate::Ray;
 use crate::intersect_plane;
 use crate::toolkit::Vec3;
 
-/// Where the ray hits the triangle (p₀, p₁, p₂), as t and the barycentric
-/// coordinates (α, β) of the hit point x = p₀ + α·e₁ + β·e₂: the lecture's
-/// method, in two steps.
+/// Where the ray hits the triangle (p₀, p₁, p₂): `Some((t, α, β))`, with t
+/// the distance along the ray and (α, β) the barycentric coordinates of the
+/// hit point. The lecture's method in two steps, the triangle's plane and
+/// then α and β, derived in the README, section *The lecture's method: the
+/// plane, then α and β*.
 ///
-/// 1. N = e₁ × e₂ is at right angles to the triangle, and |N| is twice its
-///    area. With the unit normal n = N / |N|, the triangle's plane is
-///    n·x + d = 0, d = −n·p₀. The ray meets it where [`intersect_plane`]
-///    says, at x = r(t).
-/// 2. With w = x − p₀ = α·e₁ + β·e₂, take the cross product with e₂ and
-///    with e₁: w × e₂ = α·N and e₁ × w = β·N. So
-///    α = (w × e₂)·n / |N| and β = (e₁ × w)·n / |N|: the signed areas of the
-///    triangles (p₀, x, p₂) and (p₀, p₁, x) as parts of the whole.
-///
-/// x is inside (or on the border) when 0 ≤ α, 0 ≤ β and α + β ≤ 1. Both
-/// sides of the triangle count.
+/// * The edges from p₀ are e₁ = p₁ − p₀ and e₂ = p₂ − p₀, and (α, β) are the
+///   hit point x's coordinates along them: x = p₀ + α·e₁ + β·e₂. So α is
+///   p₁'s weight, β is p₂'s, and 1 − α − β is p₀'s.
+/// * t obeys the plane's rules ([`intersect_plane`]): finite and strictly
+///   between `t_min` and `t_max`, and `None` for a ray parallel to the
+///   triangle's plane, in it or beside it.
+/// * The point counts when it is inside the triangle or on its border:
+///   0 ≤ α, 0 ≤ β and α + β ≤ 1, equalities included, so points exactly on
+///   an edge or a corner are hits. Otherwise `None`.
+/// * Both sides count: a ray that meets the triangle from its back is a hit
+///   as much as one that meets it from its front.
 ///
 /// Right on paper; but two triangles that share an edge decide a ray through
 /// it with different numbers, and rounding can make both say "outside". The
@@ -136,8 +138,9 @@ pub fn barycentrics(vertices: [Vec3; 3], ray: &Ray) -> (f32, f32) {
 /// The point of the triangle with barycentric coordinates (α, β):
 /// (1 − α − β)·p₀ + α·p₁ + β·p₂.
 ///
-/// Why not r(t) = r0 + t·rd? That point carries the rounding error of t, which
-/// grows with the distance travelled, in every direction, off the plane too.
+/// Why not the ray's point r(t)? That point carries the rounding error of t,
+/// which grows with the distance travelled, in every direction, off the
+/// plane too.
 /// A weighted mean of the corners is off the triangle's plane by at most a
 /// few units in the last place of the corners' coordinates, however thin the
 /// triangle (pbrt computes its hit points the same way), and chapter 4

@@ -46,13 +46,22 @@ impl<'a> Surface<'a> {
     }
 }
 
-/// Lambert's cosine law, the lecture's I_d = k_d · I_L · cos θ: a matte
-/// surface of albedo k_d (`surface.material.color`) under light that gives
-/// I_L (`incoming.irradiance`, the irradiance of a surface facing the light)
-/// sends back k_d · I_L · cos θ, where cos θ = n·l for the unit normal n and
-/// the unit vector l towards the light. Light arriving at angle θ spreads
-/// over 1/cos θ times the area. A light behind the surface (n·l < 0) gives
-/// nothing, never a negative amount.
+/// Lambert's cosine law: the light that a matte (Lambertian) surface sends
+/// towards the eye of what one point or spot light gives it, in the
+/// workbook's units, a pixel value per channel. Derived in the README,
+/// section *Lambert's cosine law*, with the workbook's convention for the
+/// 1/π in *Why there is no 1/π*.
+///
+/// * `surface.material.color` is the albedo k_d, per channel, in [0, 1].
+/// * `surface.normal` is the unit normal n, already turned to face the eye:
+///   use it, not the hit's geometric normal.
+/// * `incoming.direction` is l, the unit vector from the surface point
+///   towards the light; θ is the angle between n and l.
+/// * `incoming.irradiance` is I_L, per channel: what the light gives a
+///   surface that faces it head on. The fall-off with distance and a spot's
+///   cone are already in it: do not apply them again.
+/// * Colours multiply channel by channel. The result is never negative: a
+///   light behind the surface or in its plane (θ ≥ 90°) gives black.
 pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
     // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light; nothing for light from behind
     crate::workbench::exercise::solution_begins("ch03-lambert");
@@ -62,18 +71,27 @@ pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
 }
 
 /// The light that reaches the eye from `surface`: the sum, channel by
-/// channel, of what each light of the scene adds.
+/// channel, of what each light of the scene adds, [`arrival`] saying what a
+/// light sends to the surface's point. Derived in the README, section *The
+/// light loop*.
 ///
-/// * Ambient light adds albedo × ambient colour, once per ambient light.
-/// * A point or spot light adds `reflect(incoming)` if it is in front of the
-///   surface (n·l > 0) and `visible(surface, incoming)` says nothing blocks
-///   it. `visible` is not even asked about a light that could add nothing:
-///   one behind the surface, outside its cone ([`Arrival::Dark`]), or whose
-///   reflection is zero (a black mirror). Chapter 4's `visible` traces a
-///   shadow ray, so every question costs a ray.
+/// * An ambient light ([`Arrival::Ambient`]) adds its ambient term, the
+///   albedo's share of its colour: once for each ambient light of the
+///   scene, however many other lights there are.
+/// * A point or spot light whose light arrives ([`Arrival::Incoming`])
+///   adds `reflect(incoming)`, but only if the light is strictly in front
+///   of the surface, on the side that `surface.normal` (the normal facing
+///   the eye) points to, not in its plane or behind it, and
+///   `visible(surface, incoming)` says that nothing blocks it. A light
+///   behind the surface adds nothing, whatever `reflect` would say.
+/// * `visible` is not even asked about a light that could add nothing: one
+///   behind the surface, one outside its cone ([`Arrival::Dark`]), or one
+///   whose `reflect` is zero (a black mirror). Chapter 4's `visible` traces
+///   a shadow ray, so every question costs a ray.
 ///
 /// Lights add: two lights make a point brighter than either alone, and the
-/// sum may exceed 1 (the picture clamps it when it is written).
+/// sum may exceed 1 (no clamping here: the picture clamps it when it is
+/// written).
 ///
 /// This chapter passes [`always_visible`] and [`lambert`]; chapter 4 passes a
 /// shadow ray, chapter 5 adds a highlight to `reflect`.

@@ -12,10 +12,12 @@ pub struct Incoming {
     /// Distance from the surface point to the light.
     pub distance: f32,
     /// Colour × intensity / r² (no 1/r² for a light without falloff),
-    /// times the spot's cone factor: the
-    /// *irradiance* the light gives a surface at distance r that faces it
-    /// (at normal incidence), per channel; the lecture's I_L. Lambert's law
-    /// multiplies it by cos θ for a surface at angle θ.
+    /// times the spot's cone factor: the *irradiance* the light gives a
+    /// surface at distance r that faces it (at normal incidence), per
+    /// channel; the README's I_L. A surface tilted away from the light
+    /// receives less of it (README, *Lambert's cosine law*; the workbook
+    /// folds the 1/π of the diffuse BRDF into the light's intensity, see
+    /// *Why there is no 1/π*).
     pub irradiance: Color,
     /// Does the light cast shadows? (Chapter 4 traces no shadow ray if not.)
     pub casts_shadows: bool,
@@ -37,8 +39,8 @@ pub enum Arrival {
 /// A point light of intensity I at distance r gives the irradiance
 /// colour × I / r² to a surface facing it: its power spreads over a sphere
 /// whose area grows with r² (or colour × I at any distance, if the light
-/// says it has no falloff: see [`attenuation`]). A spot light is a point light
-/// times [`spot_factor`].
+/// says it has no falloff, [`Falloff::None`]: see `attenuation`). A spot
+/// light is a point light times [`spot_factor`].
 // Asked for every light at every hit. Inlined into the tracer's loop over
 // the lights, the point and the answer stay in registers; called, both go
 // through memory. The complete tracer's `trace` is compiled in other
@@ -113,9 +115,21 @@ fn attenuation(falloff: Falloff, distance: f32) -> f32 {
     }
 }
 
-/// How much of a spot light goes out along `ray` (a unit vector from the
-/// light): 1 within `inner` degrees of the axis, 0 beyond `outer`, and a
-/// smooth step (3s² − 2s³) of the cosine in between, so the edge has no seam.
+/// How much of a spot light goes out in the direction `ray`: the cone's
+/// factor, from 0 to 1, that multiplies the light's irradiance. Derived in
+/// the README, section *The spot light's cone*.
+///
+/// * `axis` is the cone's axis a (the spot's `direction`), and `ray` the
+///   direction from the light towards the lit point, both of length 1.
+/// * `inner_degrees` and `outer_degrees` are the cone's half-angles, in
+///   **degrees**, with 0 ≤ inner ≤ outer ≤ 90 (the scene file checks it).
+/// * 1 for a direction within the inner half-angle of the axis, its edge
+///   included; 0 for one at or beyond the outer half-angle.
+/// * In between, the factor falls from 1 at the inner edge to 0 at the
+///   outer one along the README's smooth step, measured on the cosine of the
+///   angle to the axis (not on the angle itself): no kink at either edge.
+/// * inner = outer is a cone with a hard edge: 1 up to the edge and on
+///   it, 0 beyond, and no division by zero.
 pub fn spot_factor(axis: Vec3, inner_degrees: f32, outer_degrees: f32, ray: Vec3) -> f32 {
     // EXERCISE(ch03-spot): the cone's factor for this direction: 1 within inner degrees of the axis, 0 beyond outer, between them the smooth step of the cosine (README)
     crate::workbench::exercise::solution_begins("ch03-spot");
