@@ -10,7 +10,9 @@ pub mod ray_tree;
 pub use ch01_rays::{Camera, Ray, render, scene_files, toolkit, workbench};
 pub use cone::{cone_point, intersect_cone};
 pub use plane::{intersect_plane, plane_point};
-pub use sphere::{Quadratic, intersect_sphere, sphere_point, sphere_roots, sphere_roots_abc};
+pub use sphere::{
+    Quadratic, intersect_sphere, nearest_root, sphere_point, sphere_roots, sphere_roots_abc,
+};
 pub use triangle::{
     barycentrics, intersect_triangle, smooth_normal, triangle_by_plane, triangle_normal,
     triangle_point,
@@ -60,6 +62,25 @@ pub fn intersect(shape: &Shape, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32
             apex_radius,
             ..
         } => intersect_cone(base, base_radius, apex, apex_radius, ray, t_min, t_max),
+    }
+}
+
+/// Where the ray meets `shape`, as [`intersect`] says, but by the lecture's
+/// methods as written on paper: a sphere by its quadratic in a, b, c
+/// ([`sphere_roots_abc`]), a triangle by its plane and then α and β
+/// ([`triangle_by_plane`]). This chapter draws its pictures with them, so
+/// that your own code draws them; the README's *When the numbers get hard*
+/// and *Shared edges* show where they fail, and why the later chapters use
+/// the robust forms.
+pub fn intersect_lecture(shape: &Shape, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+    match *shape {
+        Shape::Sphere { center, radius } => {
+            nearest_root(sphere_roots_abc(center, radius, ray)?, t_min, t_max)
+        }
+        Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
+            triangle_by_plane(vertices, ray, t_min, t_max).map(|(t, _, _)| t)
+        }
+        _ => intersect(shape, ray, t_min, t_max),
     }
 }
 
@@ -140,18 +161,34 @@ fn largest(p: Vec3) -> f32 {
     p.abs().max_element()
 }
 
+/// The hit of the object that the ray meets first, by the tracer's robust
+/// tests ([`intersect`]): [`closest_hit_by`] with them. Every chapter after
+/// this one traces with it.
+pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+    closest_hit_by(intersect, objects, ray, t_min, t_max)
+}
+
 /// The hit of the object that the ray meets first: the smallest t, over
 /// all of `objects`, strictly between `t_min` and `t_max`. Derived in the
 /// README, section *The closest hit*.
 ///
-/// * Each object's hits are those of the tracer's test for its shape,
-///   [`intersect`], and the `Hit` returned is the one [`hit_at`] fills in,
-///   with `object` the index of the object in `objects`.
+/// * `intersect(shape, ray, t_min, t_max)` says where the ray meets a
+///   shape (the nearest t in the range, or `None`): this chapter's picture
+///   passes the lecture's methods ([`intersect_lecture`]), every later
+///   chapter the robust ones ([`intersect`]). The `Hit` returned is the
+///   one [`hit_at`] fills in, with `object` the index of the object in
+///   `objects`.
 /// * The nearest object wins wherever it is in the list; for two objects
 ///   hit at exactly the same t, the first in the list.
 /// * `None` if the ray meets no object in (t_min, t_max), or `objects` is
 ///   empty.
-pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+pub fn closest_hit_by(
+    intersect: impl Fn(&Shape, &Ray, f32, f32) -> Option<f32>,
+    objects: &[Object],
+    ray: &Ray,
+    t_min: f32,
+    t_max: f32,
+) -> Option<Hit> {
     // EXERCISE(ch02-closest): the hit of the object met nearest along the ray within (t_min, t_max), as a Hit, or None if the ray meets none
     crate::workbench::exercise::solution_begins("ch02-closest");
     let mut closest: Option<(f32, usize)> = None;
@@ -177,9 +214,10 @@ pub enum View {
     Depth,
 }
 
-/// The colour seen along a primary ray in the chosen view.
+/// The colour seen along a primary ray in the chosen view, its closest hit
+/// found by the lecture's methods ([`intersect_lecture`]).
 pub fn shade(scene: &Scene, view: View, ray: &Ray) -> Color {
-    let hit = closest_hit(&scene.objects, ray, 0.0, f32::INFINITY);
+    let hit = closest_hit_by(intersect_lecture, &scene.objects, ray, 0.0, f32::INFINITY);
     match (view, hit) {
         (View::Flat, Some(hit)) => scene.material(&scene.objects[hit.object]).color,
         (View::Normals, Some(hit)) => (hit.normal + Vec3::ONE) / 2.0,

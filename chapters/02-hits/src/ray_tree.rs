@@ -8,7 +8,7 @@ use crate::toolkit::scene::Shape;
 use crate::workbench::cli::Pixel;
 use crate::workbench::ray_tree::record::ray_node;
 use crate::workbench::ray_tree::{End, HitFacts, HitNode, RayKind, RayNode, TracerInfo};
-use crate::{Hit, Ray, View, closest_hit, shade, sphere_roots};
+use crate::{Hit, Ray, View, closest_hit_by, intersect_lecture, shade, sphere_roots};
 
 /// The tree's node of the chapter's `hit`, with the roots of the chapter's
 /// own sphere quadratic when it is on a sphere.
@@ -37,11 +37,11 @@ pub fn hit_node(scene: &Scene, hit: &Hit, ray: &Ray) -> HitNode {
 }
 
 /// Chapter 2's tree: the primary ray, its closest hit (as `shade` finds
-/// it) and the colour the chosen view shows there.
+/// it, by the lecture's methods) and the colour the chosen view shows there.
 pub fn explain(scene: &Scene, view: View, pixel: Pixel) -> (TracerInfo, RayNode) {
     let ray = primary_ray(scene, pixel);
     let mut node = ray_node(RayKind::Primary, 0, &ray);
-    match closest_hit(&scene.objects, &ray, 0.0, f32::INFINITY) {
+    match closest_hit_by(intersect_lecture, &scene.objects, &ray, 0.0, f32::INFINITY) {
         None => node.end = Some(End::NoHit),
         Some(hit) => node.hit = Some(hit_node(scene, &hit, &ray)),
     }

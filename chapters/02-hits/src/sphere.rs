@@ -91,10 +91,25 @@ pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> 
     Some((t0.min(t1), t0.max(t1)))
 }
 
-/// The distance at which the ray hits the sphere: of the two roots of its
-/// line (`near` ≤ `far`, from [`sphere_roots`]), the nearest one that lies
-/// strictly between `t_min` and `t_max`. Derived in the README, section
-/// *Which root is the hit?*.
+/// Where the ray hits the sphere: the nearest of the two roots of the
+/// stable quadratic ([`sphere_roots`]) in (t_min, t_max), chosen by
+/// [`nearest_root`]; `None` if the line misses the sphere or neither root
+/// is in range.
+pub fn intersect_sphere(
+    center: Vec3,
+    radius: f32,
+    ray: &Ray,
+    t_min: f32,
+    t_max: f32,
+) -> Option<f32> {
+    nearest_root(sphere_roots(center, radius, ray)?, t_min, t_max)
+}
+
+/// The distance at which a ray hits a sphere, from the two roots of its
+/// line, `(near, far)` with near ≤ far ([`sphere_roots`] or
+/// [`sphere_roots_abc`]): the nearest root that lies strictly between
+/// `t_min` and `t_max`. Derived in the README, section *Which root is the
+/// hit?*.
 ///
 /// * The roots belong to the whole line: a negative one is behind the
 ///   ray's origin. From inside the sphere the near root is behind and the
@@ -104,14 +119,7 @@ pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> 
 ///   equal to `t_max`.
 /// * `None` if the line misses the sphere, or if neither root lies in
 ///   (t_min, t_max).
-pub fn intersect_sphere(
-    center: Vec3,
-    radius: f32,
-    ray: &Ray,
-    t_min: f32,
-    t_max: f32,
-) -> Option<f32> {
-    let (near, far) = sphere_roots(center, radius, ray)?;
+pub fn nearest_root((near, far): (f32, f32), t_min: f32, t_max: f32) -> Option<f32> {
     // EXERCISE(ch02-nearest): the nearest of the two roots that lies strictly between t_min and t_max, if either does
     crate::workbench::exercise::solution_begins("ch02-nearest");
     [near, far].into_iter().find(|&t| t > t_min && t < t_max)

@@ -12,6 +12,7 @@ pub use ch00_toolkit as toolkit;
 pub use workbench;
 
 pub mod handout;
+pub mod hint;
 pub mod progress;
 pub mod regions;
 pub mod verify;

@@ -18,6 +18,10 @@ enum Command {
     /// Runs each chapter's tests in order and shows where you are: passed,
     /// failed, the first failing snapshot, and what to do next.
     Progress(workbook::progress::ProgressArgs),
+    /// Helps with an exercise, never with its code: a nudge (--level 1),
+    /// the section of the text that derives it (2), the tests that check
+    /// it (3).
+    Hint(workbook::hint::HintArgs),
     /// Checks a picture made by your own tracer, in any language, against a
     /// chapter's reference picture.
     Verify(workbook::verify::VerifyArgs),
@@ -30,6 +34,7 @@ fn main() -> ExitCode {
     workbook::workbench::cli::end_quietly_when_output_closes();
     match Cli::parse().command {
         Command::Progress(args) => workbook::progress::main(&args),
+        Command::Hint(args) => workbook::hint::main(&args),
         Command::Verify(args) => workbook::verify::main(&args),
         Command::Handout(args) => workbook::handout::main(&args),
     }

@@ -1,62 +1,61 @@
 //! The pictures: the lecture's methods, the snapshots, and the snapshot tolerance.
 
-use ch02_hits::toolkit::Scene;
-use ch02_hits::toolkit::scene::{Object, Shape};
+use ch02_hits::toolkit::scene::Shape;
+use ch02_hits::toolkit::{Scene, Vec3};
 use ch02_hits::workbench::compare::{Tolerance, compare};
-use ch02_hits::workbench::snapshot::{assert_image, check, reference_path};
-use ch02_hits::{Ray, View, intersect, sphere_roots_abc, triangle_by_plane};
+use ch02_hits::workbench::snapshot::assert_image;
+use ch02_hits::{Ray, View, closest_hit_by, intersect};
 
 use super::{INF, render, scene};
 
-/// The closest hit with the lecture's methods: `sphere_roots_abc` for
-/// spheres, `triangle_by_plane` for triangles.
-fn lecture_hit(objects: &[Object], ray: &Ray) -> Option<usize> {
-    let mut nearest: Option<(f32, usize)> = None;
-    for (index, object) in objects.iter().enumerate() {
-        let bound = nearest.map_or(INF, |(t, _)| t);
-        let t = match object.shape {
-            Shape::Sphere { center, radius } => sphere_roots_abc(center, radius, ray)
-                .and_then(|(t0, t1)| [t0, t1].into_iter().find(|&t| t > 0.0 && t < bound)),
-            Shape::Triangle { vertices } => {
-                triangle_by_plane(vertices, ray, 0.0, bound).map(|(t, _, _)| t)
+/// The default scene's picture in `view` drawn with the tracer's robust
+/// tests (the stable quadratic, the watertight triangle test), as every
+/// later chapter draws.
+fn robust(view: View) -> ch02_hits::toolkit::Image {
+    let s = scene();
+    let shade = |ray: &Ray| {
+        let hit = closest_hit_by(intersect, &s.objects, ray, 0.0, INF);
+        match (view, hit) {
+            (View::Flat, Some(hit)) => s.material(&s.objects[hit.object]).color,
+            (View::Normals, Some(hit)) => (hit.normal + Vec3::ONE) / 2.0,
+            (View::Depth, Some(hit)) => {
+                let scale = s.camera.eye.distance(s.camera.look_at);
+                Vec3::splat((-hit.t / scale).exp())
             }
-            ref shape => intersect(shape, ray, 0.0, bound),
-        };
-        if let Some(t) = t {
-            nearest = Some((t, index));
+            (View::Depth, None) => Vec3::ZERO,
+            (_, None) => s.image.background,
         }
-    }
-    nearest.map(|(_, index)| index)
+    };
+    ch02_hits::render(&s, |ray, _| shade(ray), || {}).0
 }
 
 #[test]
-fn the_lectures_methods_draw_the_same_picture() {
-    // The flat view of the default scene, its spheres and its triangle hit
-    // with the lecture's formulas instead of the tracer's robust ones: the
-    // same picture, within the snapshot tolerance.
-    let s = scene();
-    let image = ch02_hits::render(
-        &s,
-        |ray, _| match lecture_hit(&s.objects, ray) {
-            Some(index) => s.material(&s.objects[index]).color,
-            None => s.image.background,
-        },
-        || {},
-    )
-    .0;
-    let tracer = render(&s, View::Flat);
-    let verdict = compare(
-        &tracer.to_rgb8(),
-        &image.to_rgb8(),
-        Tolerance::for_size(160, 120),
-    );
-    println!("the lecture's methods against the tracer's, flat view: {verdict}");
-    let reference = std::fs::read(reference_path("02-hits", "flat")).unwrap();
-    if let Err(report) = check("02-hits", "flat-lecture", &reference, &image.to_rgb8()) {
-        panic!(
-            "the flat picture drawn with sphere_roots_abc and triangle_by_plane differs from \
-             the reference:\n{report}"
+fn the_lectures_methods_draw_the_picture_the_robust_ones_draw() {
+    // This chapter draws with the lecture's methods (`sphere_roots_abc`,
+    // `triangle_by_plane`); the later chapters with the robust ones. On
+    // the default scene, near the eye, both draw the same picture: the
+    // same pixels in the flat and depth views, and normals within a step.
+    for view in [View::Flat, View::Normals, View::Depth] {
+        let (lecture, robust) = (render(&scene(), view).to_rgb8(), robust(view).to_rgb8());
+        let differ = (lecture.pixels().zip(robust.pixels()))
+            .filter(|(a, b)| a != b)
+            .count();
+        let steps = (lecture.pixels().zip(robust.pixels()))
+            .flat_map(|(a, b)| (0..3).map(move |c| a.0[c].abs_diff(b.0[c])))
+            .max()
+            .unwrap_or(0);
+        println!("{view:?}: {differ} pixels differ, by at most {steps} steps of 255");
+        let verdict = compare(&robust, &lecture, Tolerance::for_size(160, 120));
+        assert!(
+            verdict.passed(),
+            "{view:?}: the lecture's picture and the robust one: {verdict}"
         );
+        if view != View::Normals {
+            assert_eq!(
+                differ, 0,
+                "{view:?}: the lecture's picture differs from the robust one"
+            );
+        }
     }
 }
 

@@ -26,6 +26,11 @@ pub struct HandoutArgs {
     #[arg(group = "what")]
     pub dir: Option<PathBuf>,
 
+    /// With DIR: leave the exercises of chapters 1 to N solved, so that a
+    /// teacher can release the solutions as the course goes on (0: none).
+    #[arg(long, value_name = "N", requires = "dir")]
+    pub solved_through: Option<u32>,
+
     /// The maintainers' check that needs a second build of the workbook
     /// (in target/handout-check): the lecture's own methods (the
     /// `[[lecture]]` solutions of the chapters' mistakes.toml) pass every
@@ -50,7 +55,7 @@ pub struct HandoutArgs {
 /// Runs `workbook handout`.
 pub fn main(args: &HandoutArgs) -> ExitCode {
     let result = match &args.dir {
-        Some(dir) => write_handout(dir),
+        Some(dir) => write_handout(dir, args.solved_through.unwrap_or(0)),
         None if args.check => check_handout(),
         None => check_mistakes(args.only.as_deref().unwrap_or("")),
     };
@@ -63,7 +68,9 @@ pub fn main(args: &HandoutArgs) -> ExitCode {
     }
 }
 
-fn write_handout(dir: &Path) -> Result<(), String> {
+/// Writes the handout into `dir`, with the exercises of chapters 1 to
+/// `solved_through` left solved.
+fn write_handout(dir: &Path, solved_through: u32) -> Result<(), String> {
     let root = current_workspace()?;
     if let Ok(mut entries) = std::fs::read_dir(dir)
         && entries.next().is_some()
@@ -76,13 +83,18 @@ fn write_handout(dir: &Path) -> Result<(), String> {
     if dir.exists() && !dir.is_dir() {
         return Err(format!("{} exists and is not a folder", dir.display()));
     }
-    let written = write_tree(&root, dir, |_| true)?;
+    let written = write_tree(&root, dir, |r| {
+        r.chapter().is_none_or(|chapter| chapter > solved_through)
+    })?;
     println!(
         "wrote {} files of {} to {}",
         written.files,
         root.display(),
         dir.display()
     );
+    if solved_through > 0 {
+        println!("the exercises of chapters 1 to {solved_through} are solved");
+    }
     println!("{} exercises to write:", written.regions.len());
     for (file, line, region) in &written.regions {
         println!("  {:<20} {}:{line}", region.id, file.display());

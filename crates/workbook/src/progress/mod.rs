@@ -13,6 +13,7 @@
 //! It works the same in the reference workspace (every chapter passes) and in
 //! a handout from `workbook handout`.
 
+mod order;
 mod parse;
 mod report;
 mod watch;
@@ -59,6 +60,8 @@ pub fn run_chapter(root: &Path, chapter: &ChapterEntry) -> Result<TestOutput, St
         let last = text.lines().rev().find(|l| l.starts_with("error"));
         parsed.compile_error = Some(last.unwrap_or("cargo test failed").to_owned());
     }
+    let order = order::test_order(&root.join(chapter.path()).join("tests"));
+    order::in_chapter_order(&mut parsed, &order);
     Ok(parsed)
 }
 

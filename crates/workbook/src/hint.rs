@@ -1,0 +1,213 @@
+//! `workbook hint ID`: graded help for an exercise, never its code.
+//!
+//! Level 1 is a nudge: what to compute, the exercise's own hint. Level 2
+//! is the section of the chapter's README that derives it: the README
+//! marks it with a line `<!-- derives: ID -->`, and the whole section under
+//! the heading above that line is shown. Level 3 runs the chapter's tests
+//! and names those that wait for the exercise (they reach its `todo!`), or
+//! that fail while it is written, with the file that holds each test.
+
+use std::path::Path;
+use std::process::ExitCode;
+
+use crate::regions::Region;
+use crate::workbench::chapters::{self, ChapterEntry};
+use crate::workspace::{current_workspace, workspace_regions};
+
+/// `workbook hint ID [--level N]`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct HintArgs {
+    /// The exercise, as `workbook progress` and the `todo!` name it, such
+    /// as ch02-sphere.
+    pub id: String,
+
+    /// How much help: 1, a nudge (what to compute); 2, the section of the
+    /// chapter's text that derives it; 3, the tests that check it.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=3))]
+    pub level: u8,
+}
+
+/// Runs `workbook hint`.
+pub fn main(args: &HintArgs) -> ExitCode {
+    match hint(args) {
+        Ok(text) => {
+            print!("{text}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The help `args` asks for, as text.
+pub fn hint(args: &HintArgs) -> Result<String, String> {
+    let root = current_workspace()?;
+    let regions = workspace_regions(&root)?;
+    let Some((file, line, region)) = regions.iter().find(|(_, _, r)| r.id == args.id) else {
+        let ids: Vec<&str> = regions.iter().map(|(_, _, r)| r.id.as_str()).collect();
+        return Err(format!(
+            "no exercise {:?}; the exercises are {}",
+            args.id,
+            ids.join(", ")
+        ));
+    };
+    let chapter = region
+        .chapter()
+        .and_then(|n| {
+            chapters::all()
+                .iter()
+                .find(|c| c.number() == n && !c.companion)
+        })
+        .ok_or_else(|| format!("{}: no chapter in chapters/chapters.toml", region.id))?;
+    let mut text = format!(
+        "{} in {}:{}: {}\n",
+        region.id,
+        file.display(),
+        line,
+        region.hint
+    );
+    if args.level >= 2 {
+        text += &derivation(&root, chapter, region)?;
+    }
+    if args.level >= 3 {
+        text += &tests_of(&root, chapter, region)?;
+    }
+    match args.level {
+        1 | 2 => {
+            text += &format!(
+                "\nmore help: workbook hint {} --level {}\n",
+                region.id,
+                args.level + 1
+            )
+        }
+        _ => {}
+    }
+    Ok(text)
+}
+
+/// The section of the chapter's README that derives `region`.
+fn derivation(root: &Path, chapter: &ChapterEntry, region: &Region) -> Result<String, String> {
+    let path = chapter.path().join("README.md");
+    let readme = std::fs::read_to_string(root.join(&path))
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let marker = format!("<!-- derives: {} -->", region.id);
+    match section_with(&readme, &marker) {
+        Some(section) => Ok(format!("\nFrom {}:\n\n{section}", path.display())),
+        None => Ok(format!(
+            "\n{} marks no section for {}: read it from the top of the chapter.\n",
+            path.display(),
+            region.id
+        )),
+    }
+}
+
+/// The Markdown section that holds the line `marker`: from the nearest
+/// heading above it to the next heading of the same level or higher, the
+/// marker line left out.
+pub fn section_with(markdown: &str, marker: &str) -> Option<String> {
+    let lines: Vec<&str> = markdown.lines().collect();
+    let at = lines.iter().position(|l| l.trim() == marker)?;
+    let level = |l: &str| {
+        let hashes = l.chars().take_while(|c| *c == '#').count();
+        (hashes > 0 && l[hashes..].starts_with(' ')).then_some(hashes)
+    };
+    let start = (0..at)
+        .rev()
+        .find(|&i| level(lines[i]).is_some())
+        .unwrap_or(0);
+    let depth = level(lines[start]).unwrap_or(1);
+    let end = (at + 1..lines.len())
+        .find(|&i| level(lines[i]).is_some_and(|d| d <= depth))
+        .unwrap_or(lines.len());
+    let mut section: Vec<&str> = lines[start..end].to_vec();
+    section.retain(|l| l.trim() != marker);
+    let text = section.join("\n").replace("\n\n\n", "\n\n");
+    Some(text.trim_end().to_owned() + "\n")
+}
+
+/// The chapter's tests that check `region`: those that reach its `todo!`
+/// while it is not written; once it is, those that fail, with their messages.
+fn tests_of(root: &Path, chapter: &ChapterEntry, region: &Region) -> Result<String, String> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let package = chapter.package();
+    let out = std::process::Command::new(cargo)
+        .args(["test", "-p", &package, "--no-fail-fast", "--color", "never"])
+        .current_dir(root)
+        .output()
+        .map_err(|e| format!("cannot run cargo: {e}"))?;
+    let text = format!(
+        "{}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let parsed = crate::progress::parse(&text);
+    if let Some(error) = parsed.compile_error {
+        return Ok(format!("\n{package} does not compile yet: {error}\n"));
+    }
+    let todo = format!("{}:", region.id);
+    let waiting: Vec<&(String, String)> = parsed
+        .panics
+        .iter()
+        .filter(|(_, message)| message.contains(&todo))
+        .collect();
+    let (intro, tests) = if !waiting.is_empty() {
+        ("the tests that wait for it (they reach its todo!)", waiting)
+    } else if parsed.failed > 0 {
+        (
+            "it is written; the chapter's failing tests",
+            parsed.panics.iter().collect(),
+        )
+    } else {
+        return Ok(format!("\nevery test of {package} passes\n"));
+    };
+    let mut text = format!("\n{intro}:\n");
+    for (test, message) in tests {
+        let name = test.rsplit("::").next().unwrap_or(test);
+        let place = defined_in(&root.join(chapter.path()).join("tests"), name)
+            .map(|p| p.strip_prefix(root).unwrap_or(&p).display().to_string())
+            .unwrap_or_else(|| "its tests".into());
+        text += &format!(
+            "  {test} ({place})\n    {}\n",
+            message.lines().next().unwrap_or("")
+        );
+    }
+    Ok(text)
+}
+
+/// The test file under `dir` that defines `fn name`.
+fn defined_in(dir: &Path, name: &str) -> Option<std::path::PathBuf> {
+    let needle = format!("fn {name}(");
+    let mut folders = vec![dir.to_path_buf()];
+    while let Some(folder) = folders.pop() {
+        for entry in std::fs::read_dir(&folder).ok()? {
+            let path = entry.ok()?.path();
+            if path.is_dir() {
+                folders.push(path);
+            } else if std::fs::read_to_string(&path).is_ok_and(|t| t.contains(&needle)) {
+                return Some(path);
+            }
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::section_with;
+
+    const README: &str = "# Chapter\n\nintro\n\n## The sphere\n\n<!-- derives: ch02-sphere -->\nA ray meets a sphere where...\n\n### The roots\n\nt = ...\n\n## Triangles\n\nnot this\n";
+
+    #[test]
+    fn the_section_runs_from_its_heading_to_the_next_of_its_level() {
+        let section = section_with(README, "<!-- derives: ch02-sphere -->").unwrap();
+        assert!(section.starts_with("## The sphere\n"), "{section}");
+        assert!(section.contains("### The roots"), "{section}");
+        assert!(
+            !section.contains("Triangles") && !section.contains("derives"),
+            "{section}"
+        );
+        assert_eq!(section_with(README, "<!-- derives: ch02-plane -->"), None);
+    }
+}
