@@ -202,6 +202,26 @@ pub fn closest_hit_by(
     // END EXERCISE
 }
 
+/// Which tests find the hits of the chapter-2 picture.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Method {
+    /// The lecture's methods, your own: [`intersect_lecture`].
+    #[default]
+    Lecture,
+    /// The robust forms the later chapters trace with: [`intersect`].
+    Robust,
+}
+
+impl Method {
+    /// Where `ray` meets `shape` in (t_min, t_max), by this method.
+    pub fn intersect(self, shape: &Shape, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+        match self {
+            Method::Lecture => intersect_lecture(shape, ray, t_min, t_max),
+            Method::Robust => intersect(shape, ray, t_min, t_max),
+        }
+    }
+}
+
 /// What the chapter-2 picture shows at each hit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
 pub enum View {
@@ -215,9 +235,11 @@ pub enum View {
 }
 
 /// The colour seen along a primary ray in the chosen view, its closest hit
-/// found by the lecture's methods ([`intersect_lecture`]).
-pub fn shade(scene: &Scene, view: View, ray: &Ray) -> Color {
-    let hit = closest_hit_by(intersect_lecture, &scene.objects, ray, 0.0, f32::INFINITY);
+/// found by `method`.
+pub fn shade(scene: &Scene, view: View, method: Method, ray: &Ray) -> Color {
+    let intersect =
+        |shape: &Shape, ray: &Ray, t_min, t_max| method.intersect(shape, ray, t_min, t_max);
+    let hit = closest_hit_by(intersect, &scene.objects, ray, 0.0, f32::INFINITY);
     match (view, hit) {
         (View::Flat, Some(hit)) => scene.material(&scene.objects[hit.object]).color,
         (View::Normals, Some(hit)) => (hit.normal + Vec3::ONE) / 2.0,
@@ -232,8 +254,13 @@ pub fn shade(scene: &Scene, view: View, ray: &Ray) -> Color {
 }
 
 /// Chapter 2's picture: every pixel's closest hit, shown in `view`.
-pub fn render_hits(scene: &Scene, view: View, on_row: impl Fn() + Sync) -> (Image, Stats) {
-    render(scene, |ray, _| shade(scene, view, ray), on_row)
+pub fn render_hits(
+    scene: &Scene,
+    view: View,
+    method: Method,
+    on_row: impl Fn() + Sync,
+) -> (Image, Stats) {
+    render(scene, |ray, _| shade(scene, view, method, ray), on_row)
 }
 
 /// This chapter, for the command line (the rest is in chapters/chapters.toml).

@@ -8,7 +8,7 @@ use crate::toolkit::scene::Shape;
 use crate::workbench::cli::Pixel;
 use crate::workbench::ray_tree::record::ray_node;
 use crate::workbench::ray_tree::{End, HitFacts, HitNode, RayKind, RayNode, TracerInfo};
-use crate::{Hit, Ray, View, closest_hit_by, intersect_lecture, shade, sphere_roots};
+use crate::{Hit, Method, Ray, View, closest_hit_by, intersect_lecture, shade, sphere_roots};
 
 /// The tree's node of the chapter's `hit`, with the roots of the chapter's
 /// own sphere quadratic when it is on a sphere.
@@ -45,6 +45,6 @@ pub fn explain(scene: &Scene, view: View, pixel: Pixel) -> (TracerInfo, RayNode)
         None => node.end = Some(End::NoHit),
         Some(hit) => node.hit = Some(hit_node(scene, &hit, &ray)),
     }
-    node.color = Some(shade(scene, view, &ray).to_array());
+    node.color = Some(shade(scene, view, Method::Lecture, &ray).to_array());
     (TracerInfo::HITS, node)
 }

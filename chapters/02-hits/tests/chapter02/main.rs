@@ -16,7 +16,7 @@ mod spheres;
 mod triangles;
 
 use ch02_hits::toolkit::{Image, Scene};
-use ch02_hits::{CHAPTER, View, render_hits};
+use ch02_hits::{CHAPTER, Method, View, render_hits};
 
 pub(crate) const INF: f32 = f32::INFINITY;
 
@@ -27,5 +27,5 @@ pub(crate) fn scene() -> Scene {
 
 /// The picture of `scene` in `view`.
 pub(crate) fn render(scene: &Scene, view: View) -> Image {
-    render_hits(scene, view, || {}).0
+    render_hits(scene, view, Method::Lecture, || {}).0
 }

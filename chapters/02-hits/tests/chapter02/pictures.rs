@@ -1,32 +1,18 @@
 //! The pictures: the lecture's methods, the snapshots, and the snapshot tolerance.
 
 use ch02_hits::toolkit::scene::Shape;
-use ch02_hits::toolkit::{Scene, Vec3};
+use ch02_hits::toolkit::Scene;
 use ch02_hits::workbench::compare::{Tolerance, compare};
 use ch02_hits::workbench::snapshot::assert_image;
-use ch02_hits::{Ray, View, closest_hit_by, intersect};
+use ch02_hits::{Method, View, render_hits};
 
-use super::{INF, render, scene};
+use super::{render, scene};
 
 /// The default scene's picture in `view` drawn with the tracer's robust
 /// tests (the stable quadratic, the watertight triangle test), as every
 /// later chapter draws.
 fn robust(view: View) -> ch02_hits::toolkit::Image {
-    let s = scene();
-    let shade = |ray: &Ray| {
-        let hit = closest_hit_by(intersect, &s.objects, ray, 0.0, INF);
-        match (view, hit) {
-            (View::Flat, Some(hit)) => s.material(&s.objects[hit.object]).color,
-            (View::Normals, Some(hit)) => (hit.normal + Vec3::ONE) / 2.0,
-            (View::Depth, Some(hit)) => {
-                let scale = s.camera.eye.distance(s.camera.look_at);
-                Vec3::splat((-hit.t / scale).exp())
-            }
-            (View::Depth, None) => Vec3::ZERO,
-            (_, None) => s.image.background,
-        }
-    };
-    ch02_hits::render(&s, |ray, _| shade(ray), || {}).0
+    render_hits(&scene(), view, Method::Robust, || {}).0
 }
 
 #[test]
@@ -127,4 +113,42 @@ fn a_last_bit_change_passes_the_snapshot() {
     s.camera.eye *= 1.0 + 2.0 * f32::EPSILON;
     let verdict = verdict_against_default(&s, View::Normals);
     assert!(verdict.passed(), "{verdict}");
+}
+
+/// The far sphere's scene (`scenes/far-sphere.toml`) drawn by `method`,
+/// and how many of its pixels show the sphere.
+fn far_sphere(method: Method) -> (ch02_hits::toolkit::Image, usize) {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/far-sphere.toml");
+    let scene = ch02_hits::scene_files::load(path).unwrap();
+    let image = render_hits(&scene, View::Flat, method, || {}).0;
+    let background = scene.image.background;
+    let pixels = (0..scene.image.height)
+        .flat_map(|y| (0..scene.image.width).map(move |x| (x, y)))
+        .filter(|&(x, y)| image.get(x, y) != background)
+        .count();
+    (image, pixels)
+}
+
+#[test]
+fn the_lectures_quadratic_draws_a_far_sphere_too_large_and_the_stable_one_right() {
+    // A sphere of radius 1 at 10⁴, seen through a 0.02° field: its disc's
+    // radius is 60 · (1/10⁴) / tan(0.01°) ≈ 34.4 pixels, about 3 700
+    // pixels in all. The lecture's quadratic subtracts two numbers near
+    // 4·10⁸ and keeps rounding: it finds hits far beyond the sphere.
+    let expected = std::f64::consts::PI * (60.0 * 1e-4 / 0.01f64.to_radians().tan()).powi(2);
+    let (stable, stable_pixels) = far_sphere(Method::Robust);
+    let (lecture, lecture_pixels) = far_sphere(Method::Lecture);
+    println!(
+        "far sphere: {stable_pixels} pixels stable, {lecture_pixels} lecture, {expected:.0} expected"
+    );
+    assert!(
+        (stable_pixels as f64 - expected).abs() < 0.05 * expected,
+        "the stable quadratic covers {stable_pixels} pixels, not about {expected:.0}"
+    );
+    assert!(
+        lecture_pixels as f64 > 1.5 * expected,
+        "the lecture's quadratic covers only {lecture_pixels} pixels: it should fail here"
+    );
+    assert_image("02-hits", "far-sphere-stable", &stable);
+    assert_image("02-hits", "far-sphere-lecture", &lecture);
 }
