@@ -271,3 +271,58 @@ fn no_file_of_a_fresh_handout_holds_half_an_exercises_solution() {
         leaks.join("\n")
     );
 }
+
+/// `workbook ARGS` run at the workspace root: its exit status and stdout.
+fn workbook(args: &[&str]) -> (bool, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_workbook"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    (out.status.success(), format!("{stdout}{stderr}"))
+}
+
+#[test]
+fn every_exercise_has_a_hint_then_its_derivation_and_never_its_code() {
+    for (_, _, region) in workspace_regions(&root()).unwrap() {
+        let id = region.id.as_str();
+        let (ok, nudge) = workbook(&["hint", id]);
+        assert!(ok && nudge.contains(&region.hint), "{id}: {nudge}");
+        assert!(
+            nudge.contains(&format!("workbook hint {id} --level 2")),
+            "{nudge}"
+        );
+        let (ok, derivation) = workbook(&["hint", id, "--level", "2"]);
+        assert!(ok, "{derivation}");
+        assert!(
+            derivation.contains("\n#"),
+            "{id}: its chapter's README marks no section `<!-- derives: {id} -->`:\n{derivation}"
+        );
+        for line in region.body.iter().filter_map(|l| solution_line(l)) {
+            assert!(
+                !derivation.contains(&line),
+                "{id}: the hint gives away {line:?}"
+            );
+        }
+    }
+    let (ok, unknown) = workbook(&["hint", "ch02-spher"]);
+    assert!(
+        !ok && unknown.contains("the exercises are ch01-at"),
+        "{unknown}"
+    );
+}
+
+#[test]
+fn a_handout_can_leave_the_first_chapters_solved() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("handout-solved");
+    let _ = std::fs::remove_dir_all(&dir);
+    let (ok, out) = workbook(&["handout", dir.to_str().unwrap(), "--solved-through", "3"]);
+    assert!(ok, "{out}");
+    let source = |file: &str| std::fs::read_to_string(dir.join(file)).unwrap();
+    assert!(!source("chapters/03-lambert/src/lib.rs").contains("todo!(\"ch03-"));
+    assert!(!source("chapters/01-rays/src/lib.rs").contains("todo!(\"ch01-"));
+    assert!(source("chapters/04-shadows/src/lib.rs").contains("todo!(\"ch04-shadow-ray: "));
+    assert!(!dir.join("chapters/03-lambert/mistakes.toml").exists());
+}

@@ -1,7 +1,7 @@
 //! The pictures: the lecture's methods, the snapshots, and the snapshot tolerance.
 
-use ch02_hits::toolkit::scene::Shape;
 use ch02_hits::toolkit::Scene;
+use ch02_hits::toolkit::scene::Shape;
 use ch02_hits::workbench::compare::{Tolerance, compare};
 use ch02_hits::workbench::snapshot::assert_image;
 use ch02_hits::{Method, View, render_hits};
