@@ -23,16 +23,26 @@ pub enum ShadowStart {
     HitPoint,
 }
 
-/// The shadow ray from a surface towards a light, and the distance t_max to
-/// the light along it: a hit at 0 < t < t_max lies between the surface and
-/// the light and blocks it; anything beyond t_max is behind the light and
-/// blocks nothing.
+/// The shadow ray from a surface towards one light, and the parameter
+/// t_max at which it reaches that light. Derived in the README, section
+/// *The shadow ray* (where it starts: section *Shadow acne*).
 ///
-/// The ray starts where `origin` says: just off the surface on the light's
-/// side ([`offset_origin`]), or, to show the acne that causes, at the hit
-/// point itself. It points along l, from the surface towards the light
-/// (`incoming.direction`), which lies at the distance `incoming.distance`
-/// from the hit point.
+/// * `surface.hit` is the point p that the eye sees, with its geometric
+///   normal and its error bound. `incoming.direction` is l, the unit vector
+///   from p towards the light, and `incoming.distance` is r, the distance
+///   from p to the light.
+/// * The ray starts where `origin` says: `ShadowStart::Offset`, at
+///   [`offset_origin`] for a ray leaving towards the light (just off the
+///   surface, on the light's side); `ShadowStart::HitPoint`, at p itself
+///   (the chapter's demonstration of acne).
+/// * Its direction is l, of length 1, so t measures distance along it. It
+///   points from the surface to the light, never the other way.
+/// * t_max is the t at which the ray, from the origin it actually has,
+///   arrives at the light's position: finite, never ∞ (a blocker beyond the
+///   light would shadow the point), and not 1 (the direction is a unit
+///   vector, not the whole way to the light). A hit at 0 < t < t_max then
+///   stands between the surface and the light; one at t ≥ t_max is beyond
+///   the light and blocks nothing.
 pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -> (Ray, f32) {
     // EXERCISE(ch04-shadow-ray): the ray from the surface towards the light, starting where `origin` says, and the t at which it reaches the light
     crate::workbench::exercise::solution_begins("ch04-shadow-ray");
@@ -50,8 +60,17 @@ pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -
     // END EXERCISE
 }
 
-/// Is any shadow-casting object hit for t in (t_min, t_max)? Unlike
-/// `closest_hit`, the first blocker found is enough: we stop there.
+/// Does anything block a shadow ray? Derived in the README, section *The
+/// shadow ray*.
+///
+/// * `true` if some object of `objects` whose `shadows` flag is set is hit
+///   by `ray` at a t strictly between `t_min` and `t_max`, as chapter 2's
+///   `intersect` decides for each shape; `false` otherwise, and for an
+///   empty list.
+/// * An object with `shadows = false` never blocks, wherever it is.
+/// * Which blocker it is, and how near, does not matter: unlike
+///   `closest_hit`, it returns at the first one found without testing the
+///   objects after it.
 pub fn any_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> bool {
     // EXERCISE(ch04-any-hit): is some object that casts shadows hit for t in (t_min, t_max)? Stop at the first one found
     crate::workbench::exercise::solution_begins("ch04-any-hit");
@@ -82,10 +101,21 @@ impl World for [Object] {
     }
 }
 
-/// Does the light reach the surface? Traces one shadow ray ([`shadow_ray`],
-/// asked of `world.any_hit` up to the light), unless the light casts no
-/// shadows; then it is free and nothing is traced. Each shadow ray traced is
-/// counted in `stats.shadow`.
+/// Does a light reach the surface, or does something stand between them?
+/// Derived in the README, section *One shadow ray per light* (the shadow
+/// ray itself: section *The shadow ray*).
+///
+/// * `incoming` is what the light sends to the point seen (chapter 3's
+///   `arrival`): l, the distance to the light, and whether the light casts
+///   shadows. `origin` says where the shadow ray starts (see
+///   [`shadow_ray`]).
+/// * A light that casts no shadows (`incoming.casts_shadows` is false) is
+///   free: `true`, with no ray traced and nothing counted.
+/// * Any other light costs exactly one shadow ray, the one [`shadow_ray`]
+///   makes, counted once in `stats.shadow`. It is asked of `world.any_hit`
+///   over the whole way from its origin to the light, and no further. The
+///   light is free (`true`) if nothing is hit there, blocked (`false`) if
+///   something is.
 pub fn light_is_free(
     world: &(impl World + ?Sized),
     surface: &Surface,

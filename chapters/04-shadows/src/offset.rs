@@ -4,27 +4,27 @@ use crate::Hit;
 use crate::toolkit::Vec3;
 
 /// The origin of a ray that leaves the surface at `hit` in direction
-/// `towards`: the hit point moved off the surface, along the geometric
-/// normal, to the side the ray goes, by the hit's error bound.
+/// `towards`: a point just off the surface, on the side the ray goes to, so
+/// that the ray cannot hit its own surface again. Derived in the README,
+/// section *Shadow acne*.
 ///
-/// Why: the hit point was computed in floating point, so it lies a little
-/// above or a little below the true surface, at random. A ray started exactly
-/// there towards a light may hit its own surface at a tiny t and report a
-/// shadow that is not there: the speckle called *shadow acne*. A fixed
-/// epsilon does not cure it: rounding errors grow with the size of the
-/// coordinates (at 10 000 one f32 step is 0.001), so any fixed distance is
-/// too small far from the origin and needlessly large near it.
-///
-/// How: chapter 2 puts every hit point back onto its surface and bounds how
-/// far each of its coordinates can still be off: a few units in the last
-/// place of the largest coordinate involved (`hit.error`, e). Moving the
-/// origin by e along the normal, to the side the ray goes, clears the
-/// surface with the margin chosen, not by proof: the bound alone allows a
-/// point √3·e off a surface whose normal is diagonal. But e is several times
-/// the real error, and `tests/offset.rs` checks, in f64 on thousands of hits
-/// near the origin and at 10⁴, that every origin lies at least e/2 beyond
-/// the true surface. (The chapter text says how pbrt turns this into a
-/// proof.)
+/// * `hit.point` is the computed hit point, which may lie a little above or
+///   below the true surface; `hit.error` is e, the bound on that error
+///   (chapter 2). `hit.normal` is the geometric unit normal as the shape
+///   defines it: it may face either way, towards the ray or away from it.
+/// * `towards` is the direction the new ray will leave in (a shadow ray's
+///   l, a mirror or refracted ray's direction). Only the side of the
+///   surface it points into matters, not its length. A direction exactly
+///   along the surface counts as the side the normal faces.
+/// * The point returned lies off `hit.point` by the error bound e,
+///   measured along the geometric normal (not along the ray, not along the
+///   shading normal), on the side `towards` points into. A fixed epsilon
+///   will not do: the distance must grow with e, that is with the size of
+///   the coordinates.
+/// * It must clear the true surface by at least e/2, near the origin and
+///   far from it; `tests/offset.rs` checks that on thousands of hits. (Why
+///   e is enough, and how pbrt makes it a proof: the README, section *Is e
+///   enough? (optional)*.)
 pub fn offset_origin(hit: &Hit, towards: Vec3) -> Vec3 {
     // EXERCISE(ch04-offset): the hit point moved off the surface by its error bound, along the geometric normal, to the side that `towards` leaves by
     crate::workbench::exercise::solution_begins("ch04-offset");

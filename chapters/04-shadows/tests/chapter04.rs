@@ -213,13 +213,23 @@ fn check_shadow_ray(start: ShadowStart) {
     let end = shadow.at(t_max);
     assert!(
         end.distance(light) < 0.01,
-        "t_max is where the shadow ray reaches the light: {}, got {t_max}, which ends \
-         at {end} ({} the light)",
+        "t_max is where the shadow ray reaches the light: {}, got {t_max}: {}",
         shadow.origin.distance(light),
-        if end.distance(shadow.origin) > light.distance(shadow.origin) {
-            "beyond"
+        if t_max.is_infinite() {
+            "the shadow ray has no end, so it went beyond the light: a blocker behind the \
+             light would shadow the point. t_max must be the distance to the light"
+                .to_owned()
+        } else if end.distance(shadow.origin) > light.distance(shadow.origin) {
+            format!("the ray ends at {end}, beyond the light")
+        } else if t_max.is_nan() {
+            "t_max is not a number".to_owned()
+        } else if t_max == 1.0 {
+            format!(
+                "the ray ends at {end}, short of the light: its direction is a unit vector, so \
+                 t = 1 is one unit along it, not the light"
+            )
         } else {
-            "short of"
+            format!("the ray ends at {end}, short of the light")
         }
     );
 }

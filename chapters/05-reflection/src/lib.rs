@@ -112,13 +112,25 @@ impl Path {
     };
 }
 
-/// The colour seen along `ray`, traced against `world`, by a ray at `path`
-/// (its depth and weight).
+/// The colour seen along `ray`, traced against `world` by the Whitted
+/// `tracer`. Derived in the README, section *Recursion, not a loop*.
 ///
-/// The background if the ray hits nothing: the path ends there (the first
-/// of chapter 7's criteria, counted in `stats.ended_no_hit`). Otherwise the
-/// hit's local light, plus the light its secondary rays bring back
-/// ([`follow_secondary_rays`], which calls `trace` again: the recursion).
+/// * `path` is the ray's own place on its path: its depth (0 for a primary
+///   ray) and the weight of the whole path up to and including it
+///   ([`Path`]). The ray has a unit direction, so t is a distance.
+/// * The ray's hit is the closest one of `world` in front of its origin, at
+///   any distance.
+/// * No hit: the scene's background colour. The path ends there, and that
+///   is counted once in `stats.ended_no_hit` (the first of chapter 7's
+///   criteria).
+/// * A hit: the [`Surface`] seen there (chapter 3's `Surface::new`), and
+///   the colour of that surface: the tracer's local light
+///   ([`Whitted::local`]) plus what the tracer's secondary rays for that
+///   surface and this ray bring back ([`follow_secondary_rays`], given this
+///   ray's `path`: it works out the deeper paths). With no secondary rays,
+///   the local light is all there is.
+/// * Nothing else is counted here: the rays traced are counted where they
+///   are made.
 pub fn trace(
     tracer: &impl Whitted,
     scene: &Scene,
@@ -143,21 +155,25 @@ pub fn trace(
     // END EXERCISE
 }
 
-/// The light that reaches a surface along its secondary rays, for a hit
-/// reached by a ray at `path`.
+/// The light that a hit's secondary rays bring back to it: the sum term
+/// of trace(ray, depth) in the README, section *Recursion, not a loop*
+/// (paragraphs **Depth**, **Weight** and **Counting**).
 ///
-/// Each secondary ray is one bounce deeper than the ray that made the hit,
-/// and its path's weight is the product of the weights along the way:
-/// path.weight × secondary.weight. If the tracer lets a ray at that depth
-/// and weight go on (`may_trace`), it is counted and traced (by calling
-/// [`trace`] again), and the colour it sees counts with the ray's own weight:
-///
-/// ```text
-/// colour = Σ over the rays traced  secondary.weight × trace(secondary.ray, depth + 1)
-/// ```
-///
-/// (Only the ray's own weight multiplies what it sees: the weights before
-/// it multiply the result on the way back up the recursion.)
+/// * `secondary_rays` are the rays that leave the hit (`None` entries are
+///   no ray); `path` is the depth and path weight of the ray that made the
+///   hit, not of the secondary rays.
+/// * Each secondary ray has its own [`Path`]: one bounce deeper than
+///   `path`, and the weight of its whole path as the README's **Weight**
+///   defines it, channel by channel.
+/// * The tracer decides, with [`Whitted::may_trace`] asked of that depth
+///   and weight, whether the ray goes on. A ray it refuses is neither traced
+///   nor counted here, and adds nothing (may_trace counts the path it
+///   ends).
+/// * A ray it lets go on is counted once by its kind
+///   ([`Secondary::count`]) and traced with [`trace`] at its own path. What
+///   it sees counts in the sum with the ray's own weight only: the weights
+///   before it are applied on the way back up the recursion.
+/// * Black if no ray goes on.
 pub fn follow_secondary_rays(
     tracer: &impl Whitted,
     scene: &Scene,

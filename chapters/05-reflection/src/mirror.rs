@@ -3,11 +3,17 @@
 use crate::toolkit::{Color, Vec3};
 use crate::{Incoming, Ray, Secondary, SecondaryKind, Surface, offset_origin};
 
-/// The mirror direction of `d` about the unit normal `n`:
-/// d_o = d_i − 2(d_i·n)n.
+/// The mirror direction d_o of an arriving direction `d` (d_i) at a surface
+/// of unit normal `n`: where a perfect mirror sends it. Derived in the
+/// README, section *The mirror law*.
 ///
-/// The component of d along n flips sign and the rest is kept, so the angle
-/// out equals the angle in, and |d_o| = |d_i|.
+/// * `d` points along the arriving ray, towards the surface; it need not be
+///   a unit vector. `n` has length 1 and may face either way: the answer is
+///   the same for n and −n.
+/// * d_o leaves on the side d came from, at the same angle to the normal as
+///   d arrived, in the plane of d and n, and with the same length as d.
+/// * Straight onto the mirror (d along n) it comes straight back, reversed;
+///   a d that lies in the surface's plane is returned unchanged.
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
     // EXERCISE(ch05-reflect): the mirror direction of d about n: the part of d along n reversed, the part across n kept
     crate::workbench::exercise::solution_begins("ch05-reflect");
@@ -15,16 +21,25 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
     // END EXERCISE
 }
 
-/// The mirror ray leaving `surface` for a ray that arrived along `incoming`,
-/// carrying `weight` of its colour; none if the weight is zero (nothing
-/// would come of it, and a tracer spawns no ray of weight zero).
+/// The mirror ray that leaves `surface` for the ray `incoming` that hit it,
+/// carrying `weight`. Derived in the README, sections *The mirror law* and
+/// *The mirror ray*.
 ///
-/// Its direction is the mirror direction of the incoming one, [`reflect`]
-/// (normalised: rounding may leave it a little off unit length). It starts
-/// off the surface like a shadow ray, by `offset_origin` towards the side it
-/// leaves to; from the hit point itself it could hit its own surface again.
-/// The weight is whatever the caller gives: this chapter's tracer passes the
-/// material's reflectance, chapter 6's adds what glass reflects.
+/// * `surface.normal` is the unit normal turned to face `incoming`;
+///   `surface.hit` holds the hit point, its geometric normal and its error
+///   bound. `incoming.direction` is the arriving unit direction.
+/// * `None` if `weight` is zero in every channel: nothing would come of the
+///   ray, and a tracer spawns no ray of weight zero. A weight that is zero
+///   in some channels only still spawns one.
+/// * Otherwise a [`Secondary`] of kind `SecondaryKind::Reflection` that
+///   carries exactly `weight`, whatever it is: this chapter's tracer passes
+///   the material's reflectance, chapter 6's adds what glass reflects.
+/// * Its direction is the mirror direction ([`reflect`]) of the arriving
+///   direction, of length 1 (rounding may leave `reflect`'s result a hair
+///   off unit length: make it exact).
+/// * It starts just off the surface on the side it leaves to, as a shadow
+///   ray does ([`offset_origin`], chapter 4): from the hit point itself it
+///   could hit its own surface again.
 pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Secondary> {
     // EXERCISE(ch05-mirror-ray): none for a zero weight; else a reflection carrying `weight`, in the mirror direction of the incoming ray, starting just off the surface on the side it leaves to
     crate::workbench::exercise::solution_begins("ch05-mirror-ray");
@@ -41,12 +56,26 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
     // END EXERCISE
 }
 
-/// The highlight of a light on a shiny surface (Blinn–Phong):
-/// specular × irradiance × max(0, n·h)^shininess, where h is the unit vector
-/// halfway between the directions to the light and to the eye.
+/// The highlight of one light on a shiny surface (Blinn–Phong): the light
+/// that a point light, too small for any mirror ray to hit, sends towards
+/// the eye off the surface. Derived in the README, section *Highlights*.
 ///
-/// A mirror ray is a single direction and never hits a point light, which
-/// has no size; the highlight puts the light's reflection back in.
+/// * n is `surface.normal` (unit, turned to face the eye), v is
+///   `surface.to_eye` (unit, from the point back along the ray that hit
+///   it), l is `incoming.direction` (unit, towards the light) and I_L is
+///   `incoming.irradiance` (per channel, the irradiance of a surface facing
+///   the light). From the material: k_s is `specular` (one number, the
+///   same for every channel) and s is `shininess` (the exponent, > 0).
+/// * The highlight depends on how far the halfway vector h of l and v leans
+///   from n: at its peak, h = n, it is exactly k_s · I_L, and it dims as h
+///   leans away, the faster the larger s. The README says by how much.
+/// * It is never negative: where h leans 90° or more from n it is zero.
+///   It is not scaled by cos θ = n·l nor by the albedo: that is Lambert's
+///   term, which the tracer adds beside it.
+/// * Zero for a matte surface (k_s = 0), and zero where l and v point
+///   exactly opposite ways (h has no direction then).
+/// * It does not check whether the light is in front of the surface:
+///   chapter 3's `direct_light` asks only for lights with n·l > 0.
 pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
     // EXERCISE(ch05-highlight): Blinn–Phong: the specular weight times the light's irradiance times the cosine between the normal and the unit halfway vector of the directions to the light and to the eye, raised to the shininess
     crate::workbench::exercise::solution_begins("ch05-highlight");

@@ -29,23 +29,39 @@ pub struct Split {
     pub refracted: Option<(Color, Vec3)>,
 }
 
-/// Splits the light of a ray arriving at `surface` between reflection and
-/// refraction.
+/// How the light of a ray arriving at a transparent `surface` splits
+/// between the mirror ray and the refracted ray. Derived in the README,
+/// sections *Entering or leaving*, *Fresnel and Schlick's approximation*
+/// and *The split* (the refracted direction: [`refract`]).
 ///
-/// 1. Entering or leaving: the sign of d·n with the surface's *outward*
-///    normal `surface.hit.normal`. d·n < 0: the ray comes from outside, from
-///    index n₁ = 1 into n₂ = the material's `ior`; otherwise it leaves, from
-///    n₁ = `ior` into n₂ = 1. (A material's `ior` is relative to what
-///    surrounds the object: an air bubble inside glass has ior 1/1.5.)
-/// 2. The refracted direction by Snell's law with η = n₁/n₂ and the normal
-///    on the side the ray comes from, `surface.normal` (chapter 3 turned it
-///    to face the ray already).
-/// 3. No refracted direction (total internal reflection): the transmitted
-///    weight goes to the mirror ray, which gets reflectance + transparency.
-/// 4. Otherwise the transmitted weight T is shared: R = Schlick's Fresnel
-///    term if the material asks for it (else 0), with cos θ taken on the side
-///    of the smaller index; the mirror ray gets reflectance + T·R and the
-///    refracted ray T·(1 − R). So the two shares add up to T.
+/// * `incoming.direction` is the arriving unit direction d.
+///   `surface.hit.normal` is the surface's *outward* geometric normal;
+///   `surface.normal` is the normal already turned to face the ray, so it
+///   cannot tell entering from leaving. From the material: its reflectance
+///   ρ (per channel), its transparency T (one number for every channel),
+///   its `ior` (relative to what surrounds the object: an air bubble in
+///   glass has 1/1.5) and `fresnel`.
+/// * `indices`: (n₁, n₂), the index on the side the ray comes from and on
+///   the side it goes into: 1 outside the object, `ior` inside it. Whether
+///   the ray enters or leaves is decided with the outward normal (a ray
+///   that meets the outside enters; one exactly along the surface counts
+///   as leaving).
+/// * `refracted`: the refracted ray's weight and its direction, by
+///   [`refract`] with the η of these two indices and the normal on the
+///   ray's side; `None` on total internal reflection.
+/// * `reflected`: the mirror ray's weight: ρ plus the part of T that the
+///   surface reflects. On total internal reflection that part is all of T.
+///   Otherwise it is T's share R, Schlick's Fresnel term ([`schlick`], with
+///   cos θ on the side of the smaller index), or none when the material
+///   does not ask for `fresnel`; the refracted ray carries the rest of T.
+///   So the two shares of T always add up to T.
+/// * `fresnel`: `Some(R)`, the Fresnel term used, when the material asks
+///   for it and there is a refracted ray; `None` on total internal
+///   reflection or without `fresnel`.
+/// * `indices` and `fresnel` are not used for tracing, but chapter 6's ray
+///   tree (`--pixel X,Y`) prints them as this function returns them,
+///   beside the η it works out from them and the weights: they must be the
+///   ones the split used.
 pub fn split(surface: &Surface, incoming: &Ray) -> Split {
     // EXERCISE(ch06-split): entering or leaving (from the outward normal), the indices on either side, Snell's refracted direction; on total internal reflection everything transmitted is reflected, else the transmitted weight is shared by the Fresnel term (if the material asks for it) between the mirror ray and the refracted one
     crate::workbench::exercise::solution_begins("ch06-split");

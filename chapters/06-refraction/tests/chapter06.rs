@@ -233,11 +233,24 @@ fn leaving_glass_the_ray_bends_away_from_the_normal() {
          hit.normal does not when the ray leaves)"
     );
     let angle = angle_to(d, Vec3::Y);
+    // 19.47° is η = 1/1.5, as on the way in: the indices split returned say why.
+    let why = if split.indices.0 > split.indices.1 {
+        format!(
+            "the indices {:?} are right, so 19.47° would be η inverted: n₂/n₁ instead of n₁/n₂",
+            split.indices
+        )
+    } else {
+        format!(
+            "with the indices {:?}, 19.47° would be leaving glass not detected, treated as \
+             entering",
+            split.indices
+        )
+    };
     assert!(
         (angle - 48.59).abs() < 0.01,
         "leaving glass at 30° (d·n > 0 with the outward normal: from n₁ = 1.5 into n₂ = 1, \
          η = 1.5) the ray bends away from the normal: sin θ₂ = 1.5 sin 30°, θ₂ = 48.59°; \
-         found {angle:.2}° (19.47° would be leaving glass not detected, treated as entering)"
+         found {angle:.2}° ({why})"
     );
 }
 

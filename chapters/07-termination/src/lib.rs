@@ -42,11 +42,19 @@ impl Termination {
     }
 }
 
-/// Is a path's `weight` below `min_weight` in every channel?
+/// Is a path's `weight` below the threshold `min_weight`? The weight
+/// criterion, derived in the README, section *The two decisions*.
 ///
-/// Only then is the path not worth following: a weight of (0.5, 0.0001,
-/// 0.0001) still carries half of the red that the path finds. A weight
-/// equal to `min_weight` is not below it.
+/// * `weight` is the product of the weights along the path, per channel,
+///   each channel ≥ 0. `min_weight` is the scene's threshold, ≥ 0.
+/// * `true` only if every channel is strictly below `min_weight`: the
+///   path would bring back too little of every colour to be worth
+///   following. One channel that reaches the threshold is enough to go on:
+///   a weight of (0.5, 0.0001, 0.0001) still carries half of the red the
+///   path finds. Neither the mean nor the brightness of the channels
+///   decides.
+/// * A channel exactly equal to `min_weight` is not below it; with
+///   `min_weight` = 0 no weight is below it.
 pub fn below_threshold(weight: Color, min_weight: f32) -> bool {
     // EXERCISE(ch07-below-threshold): whether no channel of the weight reaches min_weight
     crate::workbench::exercise::solution_begins("ch07-below-threshold");
@@ -66,11 +74,22 @@ impl Whitted for Tracer {
         glass_secondary_rays(surface, incoming)
     }
 
-    /// A ray at `depth` (1 for the first bounce) on a path of `weight` may
-    /// be traced unless the depth criterion ends the path (more than
-    /// `max_depth` bounces) or, failing that, the weight criterion. Each path
-    /// ended is counted once, by the criterion that ended it, the depth
-    /// first.
+    /// May a ray be traced? The lecture's last two criteria, derived in the
+    /// README, section *The two decisions*.
+    ///
+    /// * `depth` is the ray's depth (1 for the first bounce, as in chapter
+    ///   5) and `weight` the weight of its whole path, up to and including
+    ///   its own.
+    /// * `false` if the path has had its `max_depth` bounces already (a ray
+    ///   deeper than `max_depth`); else `false` if its weight is below the
+    ///   threshold ([`below_threshold`] with `min_weight`); else `true`. A
+    ///   ray exactly at `max_depth` may go on, and so may a weight exactly
+    ///   at the threshold.
+    /// * Each `false` ends a path and is counted once, by the criterion that
+    ///   ended it: `stats.ended_max_depth` or `stats.ended_threshold`. A ray
+    ///   that fails both is counted by depth only, the criterion asked
+    ///   first. A `true` counts nothing here (the caller counts the rays it
+    ///   traces).
     fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
         // EXERCISE(ch07-may-trace): a ray may go on unless its depth is beyond max_depth or its path's weight is below the threshold; count each path ended by the criterion that ended it (the depth first)
         crate::workbench::exercise::solution_begins("ch07-may-trace");

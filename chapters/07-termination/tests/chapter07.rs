@@ -21,6 +21,15 @@ fn mirrors_of(reflectance: Color) -> Scene {
     scene
 }
 
+/// "1 bounce", "2 bounces": `n` of `thing`, in words that read.
+fn count(n: u32, thing: &str) -> String {
+    if n == 1 {
+        format!("1 {thing}")
+    } else {
+        format!("{n} {thing}s")
+    }
+}
+
 #[test]
 fn a_weight_is_below_the_threshold_only_if_every_channel_is() {
     for (weight, below, why) in [
@@ -65,8 +74,10 @@ fn in_two_perfect_mirrors_only_depth_ends_paths() {
         assert_eq!(
             stats.reflection,
             primary * max_depth as u64,
-            "max_depth = {max_depth} follows exactly {max_depth} bounces: {max_depth} mirror rays \
-             per pixel (the first bounce is depth 1; a ray beyond max_depth is not traced)"
+            "max_depth = {max_depth} follows exactly {}: {} per pixel (the first bounce is \
+             depth 1; a ray beyond max_depth is not traced)",
+            count(max_depth, "bounce"),
+            count(max_depth, "mirror ray")
         );
         assert_eq!(
             stats.ended_max_depth, primary,

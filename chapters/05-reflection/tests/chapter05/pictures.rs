@@ -52,6 +52,15 @@ fn after(bounces: u32) -> Color {
         .fold(Color::ZERO, |sum, c| sum + c)
 }
 
+/// "1 bounce", "2 bounces": `n` of `thing`, in words that read.
+fn count(n: u32, thing: &str) -> String {
+    if n == 1 {
+        format!("1 {thing}")
+    } else {
+        format!("{n} {thing}s")
+    }
+}
+
 /// Renders with chapter 5's tracer, once the recursion is known to end.
 fn render(scene: &Scene) -> (Image, Stats) {
     assert_the_recursion_is_sound();
@@ -75,15 +84,17 @@ fn max_depth_n_follows_exactly_n_bounces() {
             };
             assert!(
                 close(found, expected),
-                "max_depth = {max_depth} follows exactly {max_depth} bounces: every pixel is \
-                 0.2 × (1 + r + … + r^{max_depth}) with r = (0.5, 0.25, 0), {expected}; found \
-                 {found}.{hint}"
+                "max_depth = {max_depth} follows exactly {}: every pixel is \
+                 0.2 × (1 + ρ + … + ρ^{max_depth}) with the reflectance ρ = (0.5, 0.25, 0), \
+                 {expected}; found {found}.{hint}",
+                count(max_depth, "bounce")
             );
         }
         assert_eq!(
             stats.reflection,
             stats.primary * max_depth as u64,
-            "max_depth = {max_depth}: {max_depth} mirror rays per pixel"
+            "max_depth = {max_depth}: {} per pixel",
+            count(max_depth, "mirror ray")
         );
         assert_eq!(stats.ended_max_depth, stats.primary, "{stats}");
     }
