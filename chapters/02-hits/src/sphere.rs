@@ -117,8 +117,8 @@ pub fn intersect_sphere(
 /// * Both bounds are strict: a root equal to `t_min` is no hit (a ray that
 ///   starts on the sphere and leaves it is not hit at t = 0), nor is one
 ///   equal to `t_max`.
-/// * `None` if the line misses the sphere, or if neither root lies in
-///   (t_min, t_max).
+/// * `None` if neither root lies in (t_min, t_max). (A line that misses
+///   the sphere has no roots, and its caller asks nothing.)
 pub fn nearest_root((near, far): (f32, f32), t_min: f32, t_max: f32) -> Option<f32> {
     // EXERCISE(ch02-nearest): the nearest of the two roots that lies strictly between t_min and t_max, if either does
     crate::workbench::exercise::solution_begins("ch02-nearest");

@@ -8,8 +8,11 @@
 //!   sees no change (encoder versions and last-bit differences never matter);
 //! * beyond it, the actual picture and a three-panel diff are written to
 //!   `target/snapshot-failures/<chapter>/`, their paths and the size of the
-//!   difference are printed, and insta is handed the new picture: the test
-//!   fails, and `cargo insta review` shows the change to accept or reject.
+//!   difference are printed, and the test fails. In the reference workspace
+//!   insta is handed the new picture too, so that `cargo insta review` shows
+//!   the change to accept or reject; in a student's handout it is not: the
+//!   reference is right there, and a student who "accepted" their own
+//!   picture would lose the check.
 
 use std::path::{Path, PathBuf};
 
@@ -51,6 +54,10 @@ pub fn assert_image(chapter: &str, name: &str, image: &Image) {
         .map(|r| check(chapter, name, r, &actual))
     {
         Some(Ok(())) => reference.expect("read above"),
+        Some(Err(report)) if !is_reference() => panic!(
+            "{report}\nyour picture differs from the chapter's reference picture: fix the code \
+             until it matches (the reference is right; do not update it)"
+        ),
         Some(Err(report)) => {
             eprintln!("{report}");
             encode_png(&actual)
@@ -64,6 +71,14 @@ pub fn assert_image(chapter: &str, name: &str, image: &Image) {
     }, {
         insta::assert_binary_snapshot!(&format!("{name}.png"), bytes);
     });
+}
+
+/// Is this the reference workspace, which holds the teacher's files (the
+/// chapters' `mistakes.toml`), rather than a student's handout?
+fn is_reference() -> bool {
+    workspace_root()
+        .join("chapters/01-rays/mistakes.toml")
+        .is_file()
 }
 
 /// Compares with the reference PNG; on failure writes the actual and diff

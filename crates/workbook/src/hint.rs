@@ -103,28 +103,33 @@ fn derivation(root: &Path, chapter: &ChapterEntry, region: &Region) -> Result<St
     }
 }
 
-/// The Markdown section that holds the line `marker`: from the nearest
-/// heading above it to the next heading of the same level or higher, the
-/// marker line left out.
+/// The Markdown sections that hold the line `marker`, in the order they
+/// come: each from the nearest heading above the marker to the next
+/// heading of the same level or higher, the marker line left out.
 pub fn section_with(markdown: &str, marker: &str) -> Option<String> {
     let lines: Vec<&str> = markdown.lines().collect();
-    let at = lines.iter().position(|l| l.trim() == marker)?;
     let level = |l: &str| {
         let hashes = l.chars().take_while(|c| *c == '#').count();
         (hashes > 0 && l[hashes..].starts_with(' ')).then_some(hashes)
     };
-    let start = (0..at)
-        .rev()
-        .find(|&i| level(lines[i]).is_some())
-        .unwrap_or(0);
-    let depth = level(lines[start]).unwrap_or(1);
-    let end = (at + 1..lines.len())
-        .find(|&i| level(lines[i]).is_some_and(|d| d <= depth))
-        .unwrap_or(lines.len());
-    let mut section: Vec<&str> = lines[start..end].to_vec();
-    section.retain(|l| l.trim() != marker);
-    let text = section.join("\n").replace("\n\n\n", "\n\n");
-    Some(text.trim_end().to_owned() + "\n")
+    let sections: Vec<String> = (0..lines.len())
+        .filter(|&at| lines[at].trim() == marker)
+        .map(|at| {
+            let start = (0..at)
+                .rev()
+                .find(|&i| level(lines[i]).is_some())
+                .unwrap_or(0);
+            let depth = level(lines[start]).unwrap_or(1);
+            let end = (at + 1..lines.len())
+                .find(|&i| level(lines[i]).is_some_and(|d| d <= depth))
+                .unwrap_or(lines.len());
+            let mut section: Vec<&str> = lines[start..end].to_vec();
+            section.retain(|l| l.trim() != marker);
+            let text = section.join("\n").replace("\n\n\n", "\n\n");
+            text.trim_end().to_owned() + "\n"
+        })
+        .collect();
+    (!sections.is_empty()).then(|| sections.join("\n"))
 }
 
 /// The chapter's tests that check `region`: those that reach its `todo!`
@@ -209,5 +214,18 @@ mod tests {
             "{section}"
         );
         assert_eq!(section_with(README, "<!-- derives: ch02-plane -->"), None);
+        let twice = README.replace(
+            "### The roots\n",
+            "### The roots\n<!-- derives: ch02-plane -->\n",
+        );
+        let twice = twice.replace(
+            "## Triangles\n",
+            "## Triangles\n<!-- derives: ch02-plane -->\n",
+        );
+        let both = section_with(&twice, "<!-- derives: ch02-plane -->").unwrap();
+        assert!(
+            both.starts_with("### The roots\n") && both.contains("\n## Triangles\n"),
+            "{both}"
+        );
     }
 }

@@ -1,7 +1,7 @@
 //! The sphere: the lecture's quadratic, the stable roots, and the nearest hit ahead.
 
 use ch02_hits::toolkit::Vec3;
-use ch02_hits::{Ray, intersect_sphere, sphere_roots, sphere_roots_abc};
+use ch02_hits::{Ray, intersect_sphere, nearest_root, sphere_roots, sphere_roots_abc};
 
 use super::INF;
 
@@ -144,4 +144,20 @@ fn a_sphere_behind_the_ray_is_not_hit() {
         None,
         "both roots (−3 and −1) are behind the ray's origin: no hit"
     );
+}
+
+#[test]
+fn a_root_at_either_bound_is_no_hit() {
+    // The range (t_min, t_max) is open at both ends.
+    assert_eq!(
+        nearest_root((1.0, 3.0), 1.0, 10.0),
+        Some(3.0),
+        "a root equal to t_min is no hit (t > t_min, not ≥): the far root is the hit"
+    );
+    assert_eq!(
+        nearest_root((2.0, 3.0), 0.0, 2.0),
+        None,
+        "a root equal to t_max is no hit (t < t_max, not ≤)"
+    );
+    assert_eq!(nearest_root((2.0, 3.0), 0.0, 2.5), Some(2.0));
 }

@@ -158,3 +158,27 @@ fn visible_is_asked_only_about_lights_that_could_add_something() {
         "reflect gives zero for every light (a black mirror): visible must not be asked"
     );
 }
+
+#[test]
+fn a_light_in_the_surfaces_plane_is_skipped_like_one_behind_it() {
+    // Light D lies in the floor's plane: n·l = 0 exactly, a grazing light.
+    // It adds nothing whatever reflect says, and costs no visibility
+    // question (no shadow ray in chapter 4).
+    let light_d = r#"
+        [[lights]]
+        type = "point"
+        position = [5, 0, 0]
+        intensity = 25
+    "#;
+    let mut asked = 0;
+    let visible = |_: &Surface, _: &Incoming| {
+        asked += 1;
+        true
+    };
+    let got = light_at_floor(light_d, visible, Some(&|_, _| Color::ONE));
+    assert!(
+        got == Color::ZERO && asked == 0,
+        "a light in the surface's plane (n·l = 0) must be skipped like one behind it \
+         (skip n·l ≤ 0, not only n·l < 0): it added {got} and visible was asked {asked} times"
+    );
+}

@@ -107,11 +107,32 @@ pub fn report(results: &[ChapterResult], root: &Path) -> String {
         .modify(Columns::new(2..4), Alignment::right());
     let text = table.to_string();
     let lines: Vec<&str> = text.lines().map(str::trim_end).collect();
-    format!("{}\n\n{}\n", lines.join("\n"), next_step(results, here))
+    format!(
+        "{}\n\n{}\n",
+        lines.join("\n"),
+        next_step(results, here, root)
+    )
+}
+
+/// The exercises of `chapter` in the order its README derives them (the
+/// order of its `<!-- derives: ID -->` marks): the order to write them in.
+fn lesson_order(root: &Path, chapter: &ChapterEntry) -> Vec<String> {
+    let readme = std::fs::read_to_string(root.join(chapter.path()).join("README.md"));
+    let mut ids: Vec<String> = Vec::new();
+    for line in readme.unwrap_or_default().lines() {
+        let id = line
+            .trim()
+            .strip_prefix("<!-- derives: ")
+            .and_then(|l| l.strip_suffix(" -->"));
+        if let Some(id) = id.filter(|id| !ids.iter().any(|known| known == id)) {
+            ids.push(id.to_owned());
+        }
+    }
+    ids
 }
 
 /// The advice of the last line.
-fn next_step(results: &[ChapterResult], here: Option<usize>) -> String {
+fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) -> String {
     let Some(i) = here else {
         return "next: every chapter passes: you have written a ray tracer. Try the \
                 Extend and Explore exercises at the end of each chapter's README, render \
@@ -124,19 +145,22 @@ fn next_step(results: &[ChapterResult], here: Option<usize>) -> String {
     let readme = format!("chapters/{}/README.md", chapter.folder);
     let command = format!("cargo test -p {}", chapter.package());
     let output = row.output.as_ref().expect("a failing row was run");
-    let open: Vec<_> = row.open_exercises().collect();
+    let mut open: Vec<_> = row.open_exercises().collect();
+    let order = lesson_order(root, chapter);
+    open.sort_by_key(|(_, _, r)| {
+        order
+            .iter()
+            .position(|id| *id == r.id)
+            .unwrap_or(usize::MAX)
+    });
     if let Some(error) = &output.compile_error {
         return format!(
             "next: chapter {} does not compile ({error}); run `{command}` to see the whole message",
             chapter.number()
         );
     }
-    // The exercise a failing test named, else the first one not written yet.
-    let named = output
-        .todos
-        .iter()
-        .find_map(|id| open.iter().find(|(_, _, r)| &r.id == id));
-    match named.or(open.first()) {
+    // The first exercise not written yet, in the order the text derives them.
+    match open.first() {
         Some((file, line, region)) => format!(
             "next: chapter {}: exercise {} in {}:{line}: {}\n      \
              read {readme}, write it, then run `{command}`",
