@@ -53,13 +53,20 @@ pub fn load_within(
     path: impl AsRef<Path>,
     limit: Option<&MemoryLimit>,
 ) -> Result<Scene, SceneError> {
-    let path = path.as_ref();
+    let (text, name) = read_within(path.as_ref(), limit)?;
+    parse_within(&text, &name, limit)
+}
+
+/// The text of the scene file at `path` and its name for messages; a file
+/// larger than `limit` is refused before it is read. Both formats read
+/// their files this way.
+fn read_within(path: &Path, limit: Option<&MemoryLimit>) -> Result<(String, String), SceneError> {
     let name = path.display().to_string();
     let io = |e| SceneError::io(&name, &e);
     let bytes = std::fs::metadata(path).map_err(io)?.len();
     file::check_file_size(&name, bytes, limit)?;
     let text = std::fs::read_to_string(path).map_err(io)?;
-    parse_within(&text, &name, limit)
+    Ok((text, name))
 }
 
 /// Parses and validates scene text; `file_name` is used in error messages.

@@ -64,12 +64,7 @@ pub fn load_within(
     path: impl AsRef<Path>,
     limit: Option<&MemoryLimit>,
 ) -> Result<Scene, SceneError> {
-    let path = path.as_ref();
-    let name = path.display().to_string();
-    let io = |e| SceneError::io(&name, &e);
-    let bytes = std::fs::metadata(path).map_err(io)?.len();
-    super::file::check_file_size(&name, bytes, limit)?;
-    let text = std::fs::read_to_string(path).map_err(io)?;
+    let (text, name) = super::read_within(path.as_ref(), limit)?;
     parse_within(&text, &name, limit)
 }
 

@@ -1,4 +1,4 @@
-//! Reading what `cargo test` printed: passes, failures, snapshots, todo!s.
+//! Reading what `cargo test` printed: passes, failures, snapshots, panics.
 
 /// What one `cargo test` run printed, in the parts that matter here.
 #[derive(Debug, Default, Clone, PartialEq, Eq)]
@@ -12,8 +12,6 @@ pub struct TestOutput {
     /// Snapshots that differ from their reference: `chapter/name` and the
     /// path of the diff picture, if it was written.
     pub snapshots: Vec<(String, Option<String>)>,
-    /// Exercise ids named by `todo!` panics (`not yet implemented: chNN-...:`).
-    pub todos: Vec<String>,
     /// Each failed test's panic: the test and what it said (the message's
     /// first line, and an assertion's `left:` and `right:`), by test name.
     pub panics: Vec<(String, String)>,
@@ -35,7 +33,6 @@ impl TestOutput {
 /// * `test some::name ... FAILED` for each failed test;
 /// * `snapshot 03-lambert/default differs from its reference: ...`, followed
 ///   by `  diff (expected | mask | actual): PATH` (see `workbench::snapshot`);
-/// * `not yet implemented: ch03-lambert: hint` from a handout's `todo!`;
 /// * `thread 'name' (id) panicked at file:line:col:` and the message below it;
 /// * `error[E0308]: mismatched types` or `error: could not compile` from cargo.
 pub fn parse(output: &str) -> TestOutput {
@@ -75,11 +72,6 @@ pub fn parse(output: &str) -> TestOutput {
                 parsed.panics.push((test.to_owned(), message));
                 parsed.panics.sort();
             }
-        } else if let Some((_, rest)) = line.split_once("not yet implemented: ") {
-            let id = rest.split(':').next().unwrap_or("").trim();
-            if id.starts_with("ch") && !parsed.todos.iter().any(|t| t == id) {
-                parsed.todos.push(id.to_owned());
-            }
         } else if parsed.compile_error.is_none()
             && (line.starts_with("error[") || line.starts_with("error: could not compile"))
         {
@@ -98,16 +90,13 @@ fn panicking_test(line: &str) -> Option<&str> {
 }
 
 /// The panic message after its `panicked at` line: the first line, and
-/// for a failed `assert_eq!` its `left:` and `right:` lines, joined. The
-/// lines read are consumed, except a `not yet implemented` one, which the
-/// caller reads as a todo.
+/// for a failed `assert_eq!` its `left:` and `right:` lines, joined (a
+/// handout's `todo!` says `not yet implemented: ID: hint`). The lines read
+/// are consumed.
 fn panic_message(lines: &mut std::iter::Peekable<std::str::Lines>) -> String {
     let Some(first) = lines.peek().map(|l| l.trim().to_owned()) else {
         return String::new();
     };
-    if first.starts_with("not yet implemented: ") {
-        return first;
-    }
     lines.next();
     let mut message = first;
     while let Some(side) = lines
@@ -190,7 +179,6 @@ test result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; fini
                 Some("/w/target/snapshot-failures/03-lambert/default.diff.png".to_owned())
             )]
         );
-        assert_eq!(parsed.todos, ["ch03-lambert"]);
         assert_eq!(
             parsed.panics,
             [(
