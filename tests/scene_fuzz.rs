@@ -188,3 +188,18 @@ proptest! {
         check(raybook::nff::parse(&text, "fuzz.nff"), "fuzz.nff")?;
     }
 }
+
+#[test]
+fn a_mutation_the_fuzzer_found_is_refused_without_a_panic() {
+    // Found by `mutated_scenes_never_panic`: the error's span was mapped
+    // through a checker with no pieces of text at all.
+    let seeds = seeds();
+    let text = &seeds[11_772_836_615_416_564_769 % seeds.len()];
+    let mutation = Mutation::Replace(
+        681_774_403_322_263_074,
+        11_600_873_228_271_460_993,
+        11_735_463_111_148_212_227,
+    );
+    let text = apply(text, &mutation);
+    check(scene_files::parse(&text, "fuzz.toml"), "fuzz.toml").unwrap();
+}

@@ -234,3 +234,14 @@ fn a_scene_larger_than_the_limit_is_refused_before_parsing() {
         "{e}"
     );
 }
+
+#[test]
+fn a_file_of_nothing_but_objects_is_refused_for_its_missing_head() {
+    // Its head (everything but the [[objects]] tables) is empty: the error
+    // is placed in the file, not lost, and nothing panics.
+    let text =
+        "[[objects]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"red\"\n";
+    let error = crate::parse(text, "objects.toml").unwrap_err();
+    assert_eq!(error.file, "objects.toml");
+    assert!(error.message.contains("camera"), "{error}");
+}

@@ -38,15 +38,21 @@ impl<'a> Checker<'a> {
         Checker { file, text, pieces }
     }
 
-    /// For the file's `ranges` put together, in order.
+    /// For the file's `ranges` put together, in order. No ranges at all (a
+    /// file of nothing but `[[objects]]` tables has an empty head) stand for
+    /// the empty text at the file's start, so that an error there, such as
+    /// the missing camera, points at its first line.
     pub fn of_ranges(file: &'a str, text: &'a str, ranges: &[Range<usize>]) -> Self {
         let mut parsed = 0;
-        let pieces = (ranges.iter())
+        let mut pieces: Vec<(usize, usize)> = (ranges.iter())
             .map(|range| {
                 parsed += range.len();
                 (parsed - range.len(), range.start)
             })
             .collect();
+        if pieces.is_empty() {
+            pieces.push((0, 0));
+        }
         Checker { file, text, pieces }
     }
 
