@@ -3,8 +3,8 @@
 
 use crate::toolkit::{Scene, Vec3};
 use crate::workbench::cli::Pixel;
-use crate::workbench::ray_tree::record::{TreeRay, ray_node};
-use crate::workbench::ray_tree::{End, RayKind, RayNode, TracerInfo};
+use crate::workbench::ray_tree::record::{TreeRay, primary_node};
+use crate::workbench::ray_tree::{RayNode, TracerInfo};
 use crate::{Camera, Ray, sky};
 
 impl TreeRay for Ray {
@@ -27,8 +27,5 @@ pub fn primary_ray(scene: &Scene, pixel: Pixel) -> Ray {
 /// Chapter 1's tree: the primary ray and the sky colour it sees.
 pub fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
     let ray = primary_ray(scene, pixel);
-    let mut node = ray_node(RayKind::Primary, 0, &ray);
-    node.end = Some(End::NoHit);
-    node.color = Some(sky(&ray).to_array());
-    (TracerInfo::default(), node)
+    (TracerInfo::default(), primary_node(&ray, None, sky(&ray)))
 }

@@ -6,8 +6,8 @@ pub use ch01_rays::ray_tree::primary_ray;
 use crate::toolkit::Scene;
 use crate::toolkit::scene::Shape;
 use crate::workbench::cli::Pixel;
-use crate::workbench::ray_tree::record::ray_node;
-use crate::workbench::ray_tree::{End, HitFacts, HitNode, RayKind, RayNode, TracerInfo};
+use crate::workbench::ray_tree::record::primary_node;
+use crate::workbench::ray_tree::{HitFacts, HitNode, RayNode, TracerInfo};
 use crate::{Hit, Method, Ray, View, closest_hit_by, intersect_lecture, shade, sphere_roots};
 
 /// The tree's node of the chapter's `hit`, with the roots of the chapter's
@@ -17,22 +17,8 @@ pub fn hit_node(scene: &Scene, hit: &Hit, ray: &Ray) -> HitNode {
         Shape::Sphere { center, radius } => sphere_roots(center, radius, ray),
         _ => None,
     };
-    let Hit {
-        object,
-        t,
-        point,
-        normal,
-        shading_normal,
-        ..
-    } = *hit;
-    let facts = HitFacts {
-        object,
-        t,
-        point,
-        normal,
-        shading_normal,
-        roots,
-    };
+    let normals = (hit.normal, hit.shading_normal);
+    let facts = HitFacts::new(hit.object, hit.t, hit.point, normals, roots);
     HitNode::new(scene, facts, ray.direction)
 }
 
@@ -40,11 +26,8 @@ pub fn hit_node(scene: &Scene, hit: &Hit, ray: &Ray) -> HitNode {
 /// it, by the lecture's methods) and the colour the chosen view shows there.
 pub fn explain(scene: &Scene, view: View, pixel: Pixel) -> (TracerInfo, RayNode) {
     let ray = primary_ray(scene, pixel);
-    let mut node = ray_node(RayKind::Primary, 0, &ray);
-    match closest_hit_by(intersect_lecture, &scene.objects, &ray, 0.0, f32::INFINITY) {
-        None => node.end = Some(End::NoHit),
-        Some(hit) => node.hit = Some(hit_node(scene, &hit, &ray)),
-    }
-    node.color = Some(shade(scene, view, Method::Lecture, &ray).to_array());
-    (TracerInfo::HITS, node)
+    let hit = closest_hit_by(intersect_lecture, &scene.objects, &ray, 0.0, f32::INFINITY);
+    let hit = hit.map(|hit| hit_node(scene, &hit, &ray));
+    let color = shade(scene, view, Method::Lecture, &ray);
+    (TracerInfo::HITS, primary_node(&ray, hit, color))
 }

@@ -7,9 +7,8 @@ pub use ch02_hits::ray_tree::{hit_node, primary_ray};
 
 use crate::toolkit::{Color, Scene};
 use crate::workbench::cli::Pixel;
-use crate::workbench::ray_tree::record::ray_node;
-use crate::workbench::ray_tree::{Arriving, End, LightNode, RayKind, RayNode, ShadowNode};
-use crate::workbench::ray_tree::{Terms, TracerInfo};
+use crate::workbench::ray_tree::record::primary_node;
+use crate::workbench::ray_tree::{Arriving, LightNode, RayNode, ShadowNode, Terms, TracerInfo};
 use crate::{Arrival, Incoming, Surface, arrival, closest_hit, lambert, trace};
 
 /// What each light of the scene does at `surface`, in the scene's order,
@@ -25,23 +24,10 @@ pub fn light_nodes(
         match arrival(light, surface.hit.point) {
             Arrival::Ambient(ambient) => node.ambient(surface.material.color * ambient),
             Arrival::Dark => node,
-            Arrival::Incoming(incoming) => {
-                let Incoming {
-                    direction,
-                    distance,
-                    casts_shadows,
-                    ..
-                } = incoming;
-                let terms = || Terms {
-                    lambert: lambert(surface, &incoming),
-                    highlight: highlight(&incoming),
-                };
-                let light = Arriving {
-                    direction,
-                    distance,
-                    casts_shadows,
-                };
-                node.arriving(surface.normal, light, terms, || shadow(&incoming))
+            Arrival::Incoming(l) => {
+                let light = Arriving::new(l.direction, l.distance, l.casts_shadows);
+                let terms = || Terms::new(lambert(surface, &l), highlight(&l));
+                node.arriving(surface.normal, light, terms, || shadow(&l))
             }
         }
     };
@@ -52,16 +38,13 @@ pub fn light_nodes(
 /// Lambert term, and the colour the chapter's `trace` returns.
 pub fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
     let ray = primary_ray(scene, pixel);
-    let mut node = ray_node(RayKind::Primary, 0, &ray);
     let color = trace(scene, &ray);
-    node.color = Some(color.to_array());
-    let Some(hit) = closest_hit(&scene.objects, &ray, 0.0, f32::INFINITY) else {
-        node.end = Some(End::NoHit);
-        return (TracerInfo::LIGHTS, node);
-    };
-    let surface = Surface::new(scene, hit, &ray);
-    node.hit = Some(hit_node(scene, &hit, &ray));
-    node.lights = light_nodes(scene, &surface, &|_| None, &|_| None);
-    node.local = Some(color.to_array());
+    let hit = closest_hit(&scene.objects, &ray, 0.0, f32::INFINITY);
+    let mut node = primary_node(&ray, hit.map(|hit| hit_node(scene, &hit, &ray)), color);
+    if let Some(hit) = hit {
+        let surface = Surface::new(scene, hit, &ray);
+        node.lights = light_nodes(scene, &surface, &|_| None, &|_| None);
+        node.local = Some(color.to_array());
+    }
     (TracerInfo::LIGHTS, node)
 }

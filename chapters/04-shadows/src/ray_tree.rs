@@ -6,8 +6,8 @@ pub use ch03_lambert::ray_tree::{hit_node, light_nodes, primary_ray};
 
 use crate::toolkit::{Scene, Stats, scene::Object};
 use crate::workbench::cli::Pixel;
-use crate::workbench::ray_tree::record::{Event, Log, Recorder, ShadowQuery, ray_node};
-use crate::workbench::ray_tree::{End, RayKind, RayNode, ShadowNode, TracerInfo};
+use crate::workbench::ray_tree::record::{Log, Recorder, ShadowQuery, primary_node};
+use crate::workbench::ray_tree::{RayNode, ShadowNode, TracerInfo};
 use crate::{Hit, Incoming, Ray, ShadowStart, Surface, World, intersect, lambert, shade, trace};
 
 /// The recorder answers as the world it stands in for, and writes it down.
@@ -19,13 +19,8 @@ impl<W: World + ?Sized, S: Copy + Send> World for Recorder<'_, W, Hit, S> {
     fn any_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {
         let blocked = self.inner.any_hit(ray, t_min, t_max);
         let (origin, direction) = (ray.origin, ray.direction);
-        self.record_shadow(ShadowQuery {
-            origin,
-            direction,
-            t_min,
-            t_max,
-            blocked,
-        })
+        let query = ShadowQuery::new(origin, direction, (t_min, t_max), blocked);
+        self.record_shadow(query)
     }
 }
 
@@ -37,13 +32,9 @@ pub fn shadow_towards(
     incoming: &Incoming,
 ) -> Option<ShadowNode> {
     let shadow = ShadowQuery::towards(shadows, incoming.direction)?;
-    let ray = Ray {
-        origin: shadow.origin,
-        direction: shadow.direction,
-    };
-    Some(shadow.node_among(objects, |shape, t_min, t_max| {
-        intersect(shape, &ray, t_min, t_max)
-    }))
+    let (origin, direction) = (shadow.origin, shadow.direction);
+    let ray = Ray { origin, direction };
+    Some(shadow.node_among(objects, |shape, t0, t1| intersect(shape, &ray, t0, t1)))
 }
 
 /// Chapter 4's tree: the primary ray, its closest hit, and for each light
@@ -51,38 +42,20 @@ pub fn shadow_towards(
 /// `origin` says) and what it adds.
 pub fn explain(scene: &Scene, pixel: Pixel, origin: ShadowStart) -> (TracerInfo, RayNode) {
     let ray = primary_ray(scene, pixel);
-    let mut node = ray_node(RayKind::Primary, 0, &ray);
-    node.color = Some(trace(scene, &ray, origin, &mut Stats::default()).to_array());
-    let Some(hit) = scene.objects[..].closest_hit(&ray, 0.0, f32::INFINITY) else {
-        node.end = Some(End::NoHit);
+    let color = trace(scene, &ray, origin, &mut Stats::default());
+    let hit = scene.objects[..].closest_hit(&ray, 0.0, f32::INFINITY);
+    let mut node = primary_node(&ray, hit.map(|hit| hit_node(scene, &hit, &ray)), color);
+    let Some(hit) = hit else {
         return (TracerInfo::SHADOW_RAYS, node);
     };
     let surface = Surface::new(scene, hit, &ray);
     let log = Log::<Hit, ()>::default();
-    let world = Recorder {
-        inner: &scene.objects[..],
-        log: &log,
-    };
-    let reflect = |incoming: &Incoming| lambert(&surface, incoming);
-    let local = shade(
-        scene,
-        &world,
-        &surface,
-        origin,
-        &mut Stats::default(),
-        reflect,
-    );
-    let shadows: Vec<_> = (log.into_events().into_iter())
-        .filter_map(|event| {
-            if let Event::Shadow(s) = event {
-                Some(s)
-            } else {
-                None
-            }
-        })
-        .collect();
+    let (world, stats) = (log.recorder(&scene.objects[..]), &mut Stats::default());
+    let local = shade(scene, &world, &surface, origin, stats, |l| {
+        lambert(&surface, l)
+    });
+    let shadows = log.into_shadow_rays();
     let shadow = |incoming: &Incoming| shadow_towards(&scene.objects, &shadows, incoming);
-    node.hit = Some(hit_node(scene, &hit, &ray));
     node.lights = light_nodes(scene, &surface, &|_| None, &shadow);
     node.local = Some(local.to_array());
     (TracerInfo::SHADOW_RAYS, node)

@@ -57,15 +57,8 @@ impl<T: Whitted, W: World + ?Sized> Explain for Lesson<'_, T, W> {
     type Secondary = Secondary;
 
     fn color(&self, ray: &Ray, depth: u32, weight: Color) -> Color {
-        let path = Path { depth, weight };
-        trace(
-            self.tracer,
-            self.scene,
-            self.world,
-            ray,
-            path,
-            &mut Stats::default(),
-        )
+        let (path, stats) = (Path { depth, weight }, &mut Stats::default());
+        trace(self.tracer, self.scene, self.world, ray, path, stats)
     }
 
     fn hit(&self, hit: &Hit, ray: &Ray) -> HitNode {
@@ -96,38 +89,22 @@ impl<T: Whitted, W: World + ?Sized> Explain for Lesson<'_, T, W> {
 pub fn explain_with<T: Whitted, W: World + ?Sized>(lesson: &Lesson<T, W>, pixel: Pixel) -> RayNode {
     let ray = primary_ray(lesson.scene, pixel);
     let log = Log::default();
-    let tracer = Recorder {
-        inner: lesson.tracer,
-        log: &log,
-    };
-    let world = Recorder {
-        inner: lesson.world,
-        log: &log,
-    };
-    let color = trace(
-        &tracer,
-        lesson.scene,
-        &world,
-        &ray,
-        Path::START,
-        &mut Stats::default(),
-    );
+    let (tracer, world) = (log.recorder(lesson.tracer), log.recorder(lesson.world));
+    let (scene, stats) = (lesson.scene, &mut Stats::default());
+    let color = trace(&tracer, scene, &world, &ray, Path::START, stats);
     build(lesson, log.into_events(), &ray, color)
 }
 
 /// Chapter 5's tree: the mirror rays up to the scene's `max_depth`.
 pub fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
-    let tracer = Mirrors {
-        max_depth: scene.trace.max_depth,
-    };
+    let max_depth = scene.trace.max_depth;
+    let (tracer, world) = (&Mirrors { max_depth }, &scene.objects[..]);
     let lesson = Lesson {
         scene,
-        tracer: &tracer,
-        world: &scene.objects[..],
+        tracer,
+        world,
         split: |_, _| None,
     };
-    (
-        TracerInfo::recursive(tracer.max_depth, None),
-        explain_with(&lesson, pixel),
-    )
+    let info = TracerInfo::recursive(max_depth, None);
+    (info, explain_with(&lesson, pixel))
 }

@@ -46,16 +46,14 @@ pub fn explain(scene: &Scene, pixel: Pixel) -> (TracerInfo, RayNode) {
     let mirrors = Mirrors {
         max_depth: scene.trace.max_depth,
     };
-    let tracer = Glass { mirrors };
-    let world = &scene.objects[..];
+    let (tracer, world) = (&Glass { mirrors }, &scene.objects[..]);
+    let split = explain_split;
     let lesson = Lesson {
         scene,
-        tracer: &tracer,
+        tracer,
         world,
-        split: explain_split,
+        split,
     };
-    (
-        TracerInfo::recursive(mirrors.max_depth, None),
-        explain_with(&lesson, pixel),
-    )
+    let info = TracerInfo::recursive(mirrors.max_depth, None);
+    (info, explain_with(&lesson, pixel))
 }

@@ -52,6 +52,27 @@ pub struct HitFacts {
     pub roots: Option<(f32, f32)>,
 }
 
+impl HitFacts {
+    /// The facts of a hit on `object` at `t`; `roots` for a sphere.
+    pub fn new(
+        object: usize,
+        t: f32,
+        point: Vec3,
+        normals: (Vec3, Vec3),
+        roots: Option<(f32, f32)>,
+    ) -> Self {
+        let (normal, shading_normal) = normals;
+        HitFacts {
+            object,
+            t,
+            point,
+            normal,
+            shading_normal,
+            roots,
+        }
+    }
+}
+
 impl HitNode {
     /// The node of a hit along a ray of direction `direction`: the side is
     /// the one the geometric normal faces, and the facing normal is the
@@ -97,6 +118,16 @@ pub struct Arriving {
     pub casts_shadows: bool,
 }
 
+impl Arriving {
+    pub fn new(direction: Vec3, distance: f32, casts_shadows: bool) -> Arriving {
+        Arriving {
+            direction,
+            distance,
+            casts_shadows,
+        }
+    }
+}
+
 /// What the chapter's shading computed for a light in front of the surface.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Terms {
@@ -104,6 +135,12 @@ pub struct Terms {
     pub lambert: Color,
     /// The chapter's highlight, from chapter 5 on.
     pub highlight: Option<Color>,
+}
+
+impl Terms {
+    pub fn new(lambert: Color, highlight: Option<Color>) -> Terms {
+        Terms { lambert, highlight }
+    }
 }
 
 impl LightNode {

@@ -50,6 +50,17 @@ pub struct ShadowQuery {
 }
 
 impl ShadowQuery {
+    /// A shadow ray asked between `t_min` and `t_max`, and the answer.
+    pub fn new(origin: Vec3, direction: Vec3, (t_min, t_max): (f32, f32), blocked: bool) -> Self {
+        ShadowQuery {
+            origin,
+            direction,
+            t_min,
+            t_max,
+            blocked,
+        }
+    }
+
     /// The shadow ray among `shadows` that went along `direction` (towards
     /// a light at the hit they were traced from).
     pub fn towards(shadows: &[ShadowQuery], direction: Vec3) -> Option<&ShadowQuery> {
@@ -105,6 +116,20 @@ impl<H, S> Log<H, S> {
 
     pub fn into_events(self) -> Vec<Event<H, S>> {
         self.0.into_inner().expect("no panic while recording")
+    }
+
+    /// The shadow rays written down, in the order they were asked.
+    pub fn into_shadow_rays(self) -> Vec<ShadowQuery> {
+        let shadow = |event| match event {
+            Event::Shadow(query) => Some(query),
+            _ => None,
+        };
+        self.into_events().into_iter().filter_map(shadow).collect()
+    }
+
+    /// A recorder that stands in for `inner` and writes here.
+    pub fn recorder<'a, T: ?Sized>(&'a self, inner: &'a T) -> Recorder<'a, T, H, S> {
+        Recorder { inner, log: self }
     }
 }
 
@@ -185,6 +210,16 @@ pub trait Explain {
 /// A node for `ray`, not yet followed.
 pub fn ray_node(kind: RayKind, depth: u32, ray: &impl TreeRay) -> RayNode {
     RayNode::new(kind, depth, ray.origin(), ray.direction())
+}
+
+/// The node of a primary ray that was not recorded: it saw `color`, and
+/// met `hit` (the node of the chapter's closest hit) or nothing.
+pub fn primary_node(ray: &impl TreeRay, hit: Option<HitNode>, color: Color) -> RayNode {
+    let mut node = ray_node(RayKind::Primary, 0, ray);
+    node.end = hit.is_none().then_some(End::NoHit);
+    node.hit = hit;
+    node.color = Some(color.to_array());
+    node
 }
 
 /// The tree of the primary ray `ray` from the events its tracing wrote
