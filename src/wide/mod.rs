@@ -24,7 +24,7 @@
 //!
 //! The tests are chapter 2's, to the last bit, and the closest hit is
 //! chosen as chapter 2 chooses it, so the pictures equal brute force's.
-//! What it buys is measured in chapter 8's text and the README.
+//! What it buys is measured in chapter 8's text and book/appendix/performance.md.
 
 mod closest;
 mod node;
@@ -214,14 +214,8 @@ impl Collapse<'_> {
 
 /// A subtree of chapter 8's tree whose primitives fill at most this many
 /// packet lanes becomes one leaf: two packets at most, if of one kind. A
-/// cone takes a packet's four lanes, since it is tested alone (leaves of
-/// eight cones made rings-7 1.2 times slower).
-///
-/// Chapter 8's tree splits down to one or two primitives a leaf, since it
-/// tests them one at a time: that left packets 1.0 (balls-4) to 1.8
-/// (gears-4) primitives full. Merging subtrees of up to 4 or 8 gave primary
-/// rays a second, one thread, against none: gears-4 1.06 and 1.13 times,
-/// teapot-6 1.07 and 1.06; balls-4 and tetra-6 the same within the noise.
+/// cone takes a packet's four lanes, since it is tested alone. (Why 8:
+/// book/appendix/performance.md, "Profile and what it bought".)
 const LEAF_MAX: u32 = 8;
 
 /// The primitives under each node of chapter 8's tree, (first, count): a

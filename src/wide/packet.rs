@@ -39,7 +39,7 @@ pub struct Packet {
     shadows: u32,
 }
 
-// Three cache lines, as the README's table of bytes per object gives: 48
+// Three cache lines, as the table of bytes per object in book/appendix/performance.md gives: 48
 // bytes an object in a full packet.
 const _: () = assert!(std::mem::size_of::<Packet>() == 192);
 

@@ -39,7 +39,7 @@ pub struct Primitive {
     pub shadows: bool,
 }
 
-// The size the docs and the README's table of bytes per object give.
+// The size the docs and the table of bytes per object in book/appendix/performance.md give.
 const _: () = assert!(std::mem::size_of::<Primitive>() == 80);
 
 impl Primitive {
@@ -78,11 +78,7 @@ impl Primitive {
 /// [`Slabs`](super::node::Slabs)), and its coordinates in four lanes.
 ///
 /// The shear is worked out when the first triangle is tested, not for a ray
-/// that meets none: a sphere's test and most shadow rays need none. (Worked
-/// out lazily through a shared `OnceCell`, its checks cost more than they
-/// saved; held here and asked for through `&mut`, the check is one branch.
-/// With boxes around the few objects' triangles, tinyraytracer's scene took
-/// 7% fewer instructions and 1.14 times less time.)
+/// that meets none: a sphere's test and most shadow rays need none.
 #[derive(Debug, Clone)]
 pub struct PreparedRay<'r> {
     pub ray: &'r Ray,

@@ -6,16 +6,12 @@ pub mod stats;
 
 pub use glam::DVec3;
 /// A point, direction or colour: three f32, x, y, z. It is glam's `Vec3A`,
-/// which keeps them in one 16-byte SSE register (the fourth lane unused),
-/// so that +, −, × and ÷ of two vectors are one instruction each and a dot
-/// product a few; glam's 12-byte `Vec3` does each coordinate in turn. Same
-/// methods (`new`, `dot`, `cross`, `length`, `normalize`, ...), and its
-/// `normalize` divides by the length where `Vec3`'s multiplies by its
-/// reciprocal, one rounding fewer. With it the complete tracer's shading
-/// takes 28% fewer instructions and its render of tinyraytracer's scene 1.1
-/// times less time, for 16 bytes a vector instead of 12. Compiler messages
-/// call it `Vec3A`: write `Vec3::new(x, y, z)` (it has no `Vec3 { x, y, z }`
-/// form) and use this `Vec3`, not glam's own.
+/// which keeps them in one 16-byte SSE register, so that +, −, × and ÷ of
+/// two vectors are one instruction each (what that bought is measured in
+/// book/appendix/performance.md). Same methods as glam's `Vec3` (`new`,
+/// `dot`, `cross`, `length`, `normalize`, ...). Compiler messages call it
+/// `Vec3A`: write `Vec3::new(x, y, z)` (it has no `Vec3 { x, y, z }` form)
+/// and use this `Vec3`, not glam's own.
 pub use glam::Vec3A as Vec3;
 pub use image::Image;
 pub use scene::Scene;

@@ -3,7 +3,7 @@
 //! error deep inside it names its own line and object, and a scene larger
 //! than the memory there is is refused before it is parsed.
 //!
-//! Time and memory are measured by hand (see the README's "Large scenes"),
+//! Time and memory are measured by hand (see "Large scenes" in book/appendix/performance.md),
 //! not here: these tests check what can fail on any machine.
 
 use scene_files::SceneError;

@@ -83,6 +83,7 @@ pub enum Effect {
     Refraction,
 }
 
+// ANCHOR: material
 /// How a surface answers light.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Material {
@@ -102,6 +103,7 @@ pub struct Material {
     /// Use Schlick's Fresnel term to split reflection and refraction (chapter 6).
     pub fresnel: bool,
 }
+// ANCHOR_END: material
 
 /// Index into [`Scene::materials`].
 pub type MaterialId = usize;

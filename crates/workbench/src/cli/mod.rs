@@ -118,7 +118,7 @@ pub struct RenderArgs {
     pub pixel: Option<Pixel>,
 
     /// With --pixel: write the tree as JSON instead of text, to compare with
-    /// your own tracer's (the README's "A pixel's ray tree" has the schema).
+    /// your own tracer's (book/appendix/ray-tree.md has the schema).
     #[arg(long, requires = "pixel")]
     pub json: bool,
 }

@@ -4,8 +4,8 @@
 //!
 //! The chapters fill in the tree, each in a thin `ray_tree.rs` that lets
 //! [`record`] watch its own tracer at work; this module holds the rest: the
-//! data model, which is also the JSON schema documented in the workbook's
-//! README ("A pixel's ray tree"), the nodes made from a chapter's values
+//! data model, which is also the JSON schema documented in
+//! `book/appendix/ray-tree.md`, the nodes made from a chapter's values
 //! (`nodes.rs`), the recorder and the tree built from its record
 //! ([`record`]), and the text printing (`text.rs`). Every vector and
 //! colour is an array of three numbers, so that a tracer in any language
@@ -283,7 +283,7 @@ pub fn light_kind(light: &Light) -> &'static str {
     }
 }
 impl RayTree {
-    /// The tree as pretty-printed JSON (the schema is in the README).
+    /// The tree as pretty-printed JSON (its schema: book/appendix/ray-tree.md).
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(self).expect("a ray tree is always valid JSON")
     }

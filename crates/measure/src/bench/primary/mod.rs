@@ -12,19 +12,9 @@
 //! not passing the files. The two answers are compared ray by ray (hit or
 //! miss, and the distance), so that the table shows they did the same work.
 //!
-//! Why Embree runs in `--threads` processes too: on a machine whose cores
-//! slow each other down (hyperthreads sharing a core, or a VM's cores when
-//! its host is busy), a thread traces fewer rays a second while the others
-//! are busy. raybook's throughput per thread on
-//! `--threads` threads is then fairly compared only with Embree's per
-//! process on as many processes, both under the same contention; the table
-//! keeps the comparison with Embree's one thread beside it. Each process
-//! traces blocks of 256 rays dealt out in turn, so that the shares cost
-//! alike (contiguous shares, the busier rows in one, took up to 1.4 times
-//! as long as the other), as raybook's threads share out the work as they
-//! go: the report notes where Embree's slowest process still took more
-//! than 1.1 times its fastest's time, since that lowers Embree's
-//! throughput on the threads.
+//! Embree runs in `--threads` processes as well as on one thread, so that
+//! both sides are compared under the same contention (why, and what it
+//! changes: book/appendix/performance.md, "Primary rays against Embree").
 //!
 //! The parts:
 //!
