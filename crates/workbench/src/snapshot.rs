@@ -99,12 +99,15 @@ pub fn check(
     };
     let tolerance = Tolerance::for_size(actual.width(), actual.height());
     let verdict = compare(&expected, actual, tolerance);
-    if verdict.passed() {
-        return Ok(());
-    }
     let dir = failure_dir(chapter);
     let actual_path = dir.join(format!("{name}.actual.png"));
     let diff_path = dir.join(format!("{name}.diff.png"));
+    if verdict.passed() {
+        // A picture that passes again leaves no old diff to mislead.
+        let _ = std::fs::remove_file(&actual_path);
+        let _ = std::fs::remove_file(&diff_path);
+        return Ok(());
+    }
     let diff = diff_image(&expected, actual, tolerance);
     let written = write_atomically(&actual_path, &encode_png(actual))
         .and_then(|()| write_atomically(&diff_path, &encode_png(&diff)));

@@ -138,3 +138,17 @@ fn a_pass_writes_nothing() {
             .exists()
     );
 }
+
+#[test]
+fn a_picture_that_passes_again_takes_its_old_diff_pictures_away() {
+    let reference = encode_png(&disc(0.0, false, 0.0).to_rgb8());
+    let wrong = disc(1.0, false, 0.0).to_rgb8();
+    assert!(snapshot::check("helper-test", "fixed", &reference, &wrong).is_err());
+    let dir = snapshot::failure_dir("helper-test");
+    let (actual_path, diff_path) = (dir.join("fixed.actual.png"), dir.join("fixed.diff.png"));
+    assert!(actual_path.exists() && diff_path.exists());
+    let right = disc(0.0, false, 0.0).to_rgb8();
+    assert!(snapshot::check("helper-test", "fixed", &reference, &right).is_ok());
+    assert!(!actual_path.exists(), "{} is left behind", actual_path.display());
+    assert!(!diff_path.exists(), "{} is left behind", diff_path.display());
+}

@@ -2,10 +2,6 @@
 
 use std::path::{Path, PathBuf};
 
-use tabled::builder::Builder;
-use tabled::settings::object::Columns;
-use tabled::settings::{Alignment, Padding, Style};
-
 use super::TestOutput;
 use crate::regions::Region;
 use crate::workbench::chapters::ChapterEntry;
@@ -37,6 +33,42 @@ impl ChapterResult {
     }
 }
 
+/// The failure a chapter's row and the advice both lead with: a compile
+/// error; else the first failed test (in the chapter's order) whose own
+/// message explains it; else the first picture that differs; else the
+/// first failed test.
+enum Lead<'a> {
+    Compile(&'a str),
+    Told {
+        test: &'a str,
+        message: &'a str,
+    },
+    Snapshot {
+        name: &'a str,
+        diff: Option<&'a str>,
+    },
+    Failed(&'a str),
+    NoTests,
+    Passed,
+}
+
+fn lead(output: &TestOutput) -> Lead<'_> {
+    let told = (output.panics.iter()).find(|(test, _)| !test.starts_with("snapshot"));
+    match (&output.compile_error, told, output.snapshots.first()) {
+        (Some(error), _, _) => Lead::Compile(error),
+        (None, Some((test, message)), _) => Lead::Told { test, message },
+        (None, None, Some((name, diff))) => Lead::Snapshot {
+            name,
+            diff: diff.as_deref(),
+        },
+        (None, None, None) => match output.failed_tests.first() {
+            Some(test) => Lead::Failed(test),
+            None if output.passed == 0 => Lead::NoTests,
+            None => Lead::Passed,
+        },
+    }
+}
+
 /// The first thing that went wrong in a chapter's run, in a few words;
 /// paths relative to the workspace `root`.
 fn first_failure(output: &TestOutput, root: &Path) -> String {
@@ -45,24 +77,48 @@ fn first_failure(output: &TestOutput, root: &Path) -> String {
             .strip_prefix(root)
             .map_or(p.to_owned(), |r| r.display().to_string())
     };
-    if let Some(error) = &output.compile_error {
-        format!("does not compile: {error}")
-    } else if let Some((name, diff)) = output.snapshots.first() {
-        match diff {
-            Some(diff) => format!("snapshot {name}: {}", relative(diff)),
-            None => format!("snapshot {name}"),
-        }
-    } else if let Some(test) = output.failed_tests.first() {
-        format!("test {test}")
-    } else if output.passed == 0 {
-        "no tests ran".to_owned()
-    } else {
-        String::new()
+    match lead(output) {
+        Lead::Compile(error) => format!("does not compile: {error}"),
+        Lead::Told { test, .. } | Lead::Failed(test) => format!("test {test}"),
+        Lead::Snapshot {
+            name,
+            diff: Some(diff),
+        } => format!("snapshot {name}: {}", relative(diff)),
+        Lead::Snapshot { name, diff: None } => format!("snapshot {name}"),
+        Lead::NoTests => "no tests ran".to_owned(),
+        Lead::Passed => String::new(),
     }
 }
 
+/// The table's header line.
+pub fn header() -> String {
+    line([
+        "",
+        "chapter",
+        "passed",
+        "failed",
+        "exercises",
+        "first failure",
+    ])
+}
+
+/// One line of the table, in fixed columns (so that rows printed one at a
+/// time, as their chapters finish, line up): the marker, the chapter, the
+/// counts right-aligned, the exercises, the first failure.
+fn line([marker, chapter, passed, failed, exercises, failure]: [&str; 6]) -> String {
+    let text =
+        format!("{marker:<3}{chapter:<16}{passed:>6}  {failed:>6}  {exercises:<9}  {failure}");
+    text.trim_end().to_owned()
+}
+
+/// The line of a chapter still waiting for its tests (or running them).
+pub fn waiting_line(chapter: &ChapterEntry, running: bool) -> String {
+    let what = if running { "testing…" } else { "waiting" };
+    line(["", &chapter.folder, "", "", "", what])
+}
+
 /// The table's line for one chapter; `here` marks where the student is.
-fn table_line(result: &ChapterResult, here: bool, root: &Path) -> [String; 6] {
+pub fn row_line(result: &ChapterResult, here: bool, root: &Path) -> String {
     let (passed, failed, failure) = match &result.output {
         None => ("-".into(), "-".into(), "not run".to_owned()),
         Some(o) => (
@@ -72,41 +128,31 @@ fn table_line(result: &ChapterResult, here: bool, root: &Path) -> [String; 6] {
         ),
     };
     let marker = if here { "→" } else { "" };
-    [
-        marker.into(),
-        result.chapter.folder.clone(),
-        passed,
-        failed,
-        result.exercises_done(),
-        failure,
-    ]
+    let exercises = result.exercises_done();
+    line([
+        marker,
+        &result.chapter.folder,
+        &passed,
+        &failed,
+        &exercises,
+        &failure,
+    ])
+}
+
+/// Where the student is: the first chapter run that fails.
+pub fn here(results: &[ChapterResult]) -> Option<usize> {
+    results
+        .iter()
+        .position(|r| r.output.as_ref().is_some_and(|o| !o.passed_all()))
 }
 
 /// The table and the advice, as text.
 pub fn report(results: &[ChapterResult], root: &Path) -> String {
-    let here = results
-        .iter()
-        .position(|r| r.output.as_ref().is_some_and(|o| !o.passed_all()));
-    let mut builder = Builder::new();
-    builder.push_record([
-        "",
-        "chapter",
-        "passed",
-        "failed",
-        "exercises",
-        "first failure",
-    ]);
+    let here = here(results);
+    let mut lines = vec![header()];
     for (i, result) in results.iter().enumerate() {
-        builder.push_record(table_line(result, Some(i) == here, root));
+        lines.push(row_line(result, Some(i) == here, root));
     }
-    let mut table = builder.build();
-    // Plain columns, two spaces apart, the counts right-aligned.
-    table
-        .with(Style::empty())
-        .with(Padding::new(0, 2, 0, 0))
-        .modify(Columns::new(2..4), Alignment::right());
-    let text = table.to_string();
-    let lines: Vec<&str> = text.lines().map(str::trim_end).collect();
     format!(
         "{}\n\n{}\n",
         lines.join("\n"),
@@ -132,7 +178,7 @@ fn lesson_order(root: &Path, chapter: &ChapterEntry) -> Vec<String> {
 }
 
 /// The advice of the last line.
-fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) -> String {
+pub fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) -> String {
     let Some(i) = here else {
         return "next: every chapter passes: you have written a ray tracer. Try the \
                 Extend and Explore exercises at the end of each chapter's README, render \
@@ -170,24 +216,17 @@ fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) -> Str
             region.hint
         ),
         None => {
-            // A test's own message says most; a picture's diff comes next.
-            let told = output
-                .panics
-                .iter()
-                .find(|(test, _)| !test.starts_with("snapshot"));
-            let what = match (told, output.snapshots.first()) {
-                (Some((test, message)), _) => {
+            let what = match lead(output) {
+                Lead::Told { test, message } => {
                     return format!(
                         "next: chapter {}: the test {test} fails:\n      {message}\n      \
                          run `{command}` and compare with {readme}",
                         chapter.number()
                     );
                 }
-                (None, Some((name, _))) => format!("the snapshot {name} differs"),
-                (None, None) => match output.failed_tests.first() {
-                    Some(test) => format!("the test {test} fails"),
-                    None => "no test ran".to_owned(),
-                },
+                Lead::Snapshot { name, .. } => format!("the snapshot {name} differs"),
+                Lead::Failed(test) => format!("the test {test} fails"),
+                _ => "no test ran".to_owned(),
             };
             format!(
                 "next: chapter {}: {what}; run `{command}` and compare with {readme}",
@@ -237,10 +276,10 @@ mod tests {
         assert!(lines[1].starts_with("   02-hits") && lines[1].trim_end().ends_with('-'));
         assert!(lines[2].starts_with("→  03-lambert"), "{text}");
         assert!(lines[2].contains(" 0/1 "), "{text}");
+        // The column leads with the failure the advice explains: a test
+        // whose own message says what is wrong comes before a picture.
         assert!(
-            lines[2].ends_with(
-                "  snapshot 03-lambert/default: target/snapshot-failures/03-lambert/default.diff.png"
-            ),
+            lines[2].ends_with("  test cosine_law_head_on_versus_sixty_degrees"),
             "{text}"
         );
         assert!(lines[3].contains("not run"));
@@ -281,5 +320,8 @@ mod tests {
             ),
             "{text}"
         );
+        // The row names the same failure as the advice.
+        let row = text.lines().nth(1).unwrap();
+        assert!(row.ends_with("  test the_lectures_worked_example"), "{text}");
     }
 }

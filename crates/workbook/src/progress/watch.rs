@@ -17,17 +17,18 @@ use notify::{EventKind, RecursiveMode, Watcher};
 const SETTLE: Duration = Duration::from_millis(300);
 
 /// Runs `progress` (which prints its table and tells whether everything
-/// passed) now and after every save of a source file under `root`.
+/// passed) now and after every save of a source file under `root`, with
+/// the file saved.
 pub fn watch(
     root: &Path,
-    mut progress: impl FnMut() -> Result<bool, String>,
+    mut progress: impl FnMut(Option<&Path>) -> Result<bool, String>,
 ) -> Result<(), String> {
     let (saved, saves) = mpsc::channel();
     let mut watcher = notify::recommended_watcher(move |event: notify::Result<notify::Event>| {
         if let Ok(event) = event
             && is_a_save(&event)
         {
-            let _ = saved.send(());
+            let _ = saved.send(event.paths.first().cloned());
         }
     })
     .map_err(|e| format!("cannot watch files: {e}"))?;
@@ -35,12 +36,13 @@ pub fn watch(
     watcher
         .watch(&chapters, RecursiveMode::Recursive)
         .map_err(|e| format!("cannot watch {}: {e}", chapters.display()))?;
+    let mut saved = None;
     loop {
         clear_screen();
-        progress()?;
+        progress(saved.as_deref())?;
         println!("\nwatching chapters/ for saves (Ctrl-C to stop)");
         // One save, then the ones that come with it.
-        saves
+        saved = saves
             .recv()
             .map_err(|_| "the file watcher stopped".to_owned())?;
         while saves.recv_timeout(SETTLE).is_ok() {}
