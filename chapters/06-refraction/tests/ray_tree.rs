@@ -4,6 +4,10 @@ use std::process::Command;
 
 use serde_json::Value;
 
+/// The short tree, its folds, `--full` and the picture (`--svg`).
+#[path = "ray_tree/short.rs"]
+mod short;
+
 /// The tree the chapter binary prints for `args`.
 fn tree(args: &[&str]) -> Value {
     let output = Command::new(env!("CARGO_BIN_EXE_ch06-refraction"))

@@ -18,7 +18,7 @@ use scene_files::{Effect, Effects};
 
 mod pixel;
 
-pub use pixel::Pixel;
+pub use pixel::{Pixel, TreeView};
 use pixel::{explain_pixel, pixel};
 
 /// A chapter binary: which chapter it is, and its default scene.
@@ -113,7 +113,7 @@ pub struct RenderArgs {
     /// shadow ray finds it blocked; the secondary rays with their weights;
     /// the colour each ray brings back; and why each path ends. It follows
     /// one ray through the pixel's centre, whatever the samples, and writes
-    /// no PNG.
+    /// no PNG. The tree is short unless --full is given.
     #[arg(long, value_name = "X,Y", value_parser = pixel)]
     pub pixel: Option<Pixel>,
 
@@ -121,6 +121,10 @@ pub struct RenderArgs {
     /// your own tracer's (book/appendix/ray-tree.md has the schema).
     #[arg(long, requires = "pixel")]
     pub json: bool,
+
+    // --full, --fold-depth, --fold-weight and --svg (pixel.rs).
+    #[command(flatten)]
+    pub view: TreeView,
 }
 
 impl RenderArgs {

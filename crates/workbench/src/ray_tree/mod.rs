@@ -7,7 +7,8 @@
 //! data model, which is also the JSON schema documented in
 //! `book/appendix/ray-tree.md`, the nodes made from a chapter's values
 //! (`nodes.rs`), the recorder and the tree built from its record
-//! ([`record`]), and the text printing (`text.rs`). Every vector and
+//! ([`record`]), the text printing (`text.rs`), the folds of the short
+//! text tree (`fold.rs`) and the picture of the rays (`svg.rs`). Every vector and
 //! colour is an array of three numbers, so that a tracer in any language
 //! can write the same JSON and a student can compare the two trees.
 
@@ -16,11 +17,15 @@ use serde::{Deserialize, Serialize};
 use ch00_toolkit::Vec3;
 use scene_files::{Light, Shape};
 
+mod fold;
 mod nodes;
 pub mod record;
+mod svg;
 mod text;
 
+pub use fold::{Fold, Folded, count_rays};
 pub use nodes::{Arriving, HitFacts, Terms};
+pub use svg::to_svg;
 pub use text::{num, vec3};
 
 /// The whole tree of one pixel, as `--pixel X,Y --json` writes it.

@@ -1,13 +1,43 @@
 //! The ray tree as indented text, for people: one block per ray, its
-//! secondary rays indented below it.
+//! secondary rays indented below it. The full tree shows every ray and
+//! every detail; the short tree (the default of `--pixel`) shows the
+//! secondary rays in brief and folds the rays that matter little to the
+//! pixel (`fold.rs`), each group into one line.
 
 use std::fmt::Write;
 
+use super::fold::{Fold, Folded};
 use super::*;
 
+/// How much the text shows.
+#[derive(Debug, Clone, Copy)]
+struct View {
+    fold: Fold,
+    /// Secondary rays in brief: their hit, lights, split and colour, one
+    /// line each (the primary ray is always shown in full).
+    brief: bool,
+}
+
+impl View {
+    const FULL: View = View {
+        fold: Fold::NONE,
+        brief: false,
+    };
+}
+
 impl RayTree {
-    /// The tree as indented text, one ray and its hit per block.
+    /// The full tree as indented text: every ray, one block per ray and its hit.
     pub fn to_text(&self) -> String {
+        self.text(View::FULL)
+    }
+
+    /// The short tree: the primary ray in full, the secondary rays in
+    /// brief, and the rays that `fold` folds as one line per group.
+    pub fn to_short_text(&self, fold: Fold) -> String {
+        self.text(View { fold, brief: true })
+    }
+
+    fn text(&self, view: View) -> String {
         let mut out = String::new();
         let [x, y] = self.pixel;
         let [w, h] = self.image;
@@ -17,7 +47,14 @@ impl RayTree {
             self.chapter, self.scene, self.samples
         );
         let _ = writeln!(out, "{}", self.tracer.describe());
-        write_ray(&mut out, &self.primary, &self.tracer, "eye");
+        if view.brief && !self.primary.secondary.is_empty() {
+            let _ = writeln!(
+                out,
+                "short tree: secondary rays in brief; rays {} folded (--full shows every ray in full)",
+                view.fold.describe()
+            );
+        }
+        write_ray(&mut out, &self.primary, &self.tracer, "eye", &view);
         out
     }
 }
@@ -71,14 +108,56 @@ pub fn vec3(v: [f32; 3]) -> String {
 /// `path` names the ray by the bounces that lead to it from the eye
 /// (R a reflection, T a refraction), so that a reader knows where in a
 /// deep tree a block is.
-fn write_ray(out: &mut String, ray: &RayNode, tracer: &TracerInfo, path: &str) {
+fn write_ray(out: &mut String, ray: &RayNode, tracer: &TracerInfo, path: &str, view: &View) {
     let pad = "  ".repeat(ray.depth as usize);
-    let kind = match ray.kind {
-        RayKind::Primary => "primary ray",
-        RayKind::Reflection => "reflection ray",
-        RayKind::Refraction => "refraction ray",
-    };
-    let mut head = format!("{pad}{kind} (depth {}: {path})", ray.depth);
+    let brief = view.brief && ray.kind != RayKind::Primary;
+    write_head(out, ray, path, &pad);
+    if !ray.traced {
+        let why = ray.end.map_or("", end_text);
+        let _ = writeln!(out, "{pad}  not traced: {why}");
+        return;
+    }
+    match (&ray.hit, ray.color) {
+        (None, Some(color)) if brief && tracer.hits => {
+            let _ = writeln!(
+                out,
+                "{pad}  hits nothing: brings back the background {}; path ended (no hit)",
+                vec3(color)
+            );
+            return;
+        }
+        (None, _) if !tracer.hits => {
+            let _ = writeln!(out, "{pad}  hits nothing (this chapter has no objects yet)");
+        }
+        (None, _) => {
+            let _ = writeln!(
+                out,
+                "{pad}  hits nothing: sees the background; path ended (no hit)"
+            );
+        }
+        (Some(hit), _) => write_hit(out, hit, &pad, brief),
+    }
+    if brief {
+        write_lights_briefly(out, ray, &pad);
+    } else {
+        write_lights(out, ray, tracer, &pad);
+    }
+    if let Some(split) = &ray.refraction {
+        write_refraction(out, split, &pad, brief);
+    }
+    if ray.end == Some(End::NoSecondaryRays) {
+        let _ = writeln!(
+            out,
+            "{pad}  no secondary rays (neither mirror nor transparent): path ended"
+        );
+    }
+    write_secondary(out, ray, tracer, path, view);
+    write_color(out, ray, &format!("{} ({path})", kind_name(ray.kind)), &pad);
+}
+
+/// A ray's first two lines: which ray, its weights, where it starts and goes.
+fn write_head(out: &mut String, ray: &RayNode, path: &str, pad: &str) {
+    let mut head = format!("{pad}{} (depth {}: {path})", kind_name(ray.kind), ray.depth);
     if ray.kind != RayKind::Primary {
         let _ = write!(
             head,
@@ -94,51 +173,39 @@ fn write_ray(out: &mut String, ray: &RayNode, tracer: &TracerInfo, path: &str) {
         vec3(ray.origin),
         vec3(ray.direction)
     );
-    if !ray.traced {
-        let why = ray.end.map_or("", end_text);
-        let _ = writeln!(out, "{pad}  not traced: {why}");
-        return;
-    }
-    match &ray.hit {
-        None if !tracer.hits => {
-            let _ = writeln!(out, "{pad}  hits nothing (this chapter has no objects yet)");
-        }
-        None => {
-            let _ = writeln!(
-                out,
-                "{pad}  hits nothing: sees the background; path ended (no hit)"
-            );
-        }
-        Some(hit) => write_hit(out, hit, &pad),
-    }
-    for light in &ray.lights {
-        write_light(out, light, tracer, &pad);
-    }
-    if let Some(local) = ray.local {
-        let _ = writeln!(
-            out,
-            "{pad}  local light (sum of the lights): {}",
-            vec3(local)
-        );
-    }
-    if let Some(split) = &ray.refraction {
-        write_refraction(out, split, &pad);
-    }
-    if ray.end == Some(End::NoSecondaryRays) {
-        let _ = writeln!(
-            out,
-            "{pad}  no secondary rays (neither mirror nor transparent): path ended"
-        );
-    }
+}
+
+/// The secondary rays of `ray`, each as its block, except those the view
+/// folds: one line for all of them, where the first of them would be.
+fn write_secondary(out: &mut String, ray: &RayNode, tracer: &TracerInfo, path: &str, view: &View) {
+    let mut folded = Folded::below(ray, &view.fold);
     for next in &ray.secondary {
-        let step = if next.kind == RayKind::Refraction {
-            "T"
-        } else {
-            "R"
-        };
-        write_ray(out, next, tracer, &format!("{path} → {step}"));
+        let next_path = format!("{path} → {}", step(next.kind));
+        if !view.fold.folds(next) {
+            write_ray(out, next, tracer, &next_path, view);
+        } else if let Some(group) = folded.take() {
+            let pad = "  ".repeat(next.depth as usize);
+            let _ = writeln!(out, "{pad}{}", group.line(path));
+        }
     }
-    write_color(out, ray, &format!("{kind} ({path})"), &pad);
+}
+
+/// A ray's kind, as its block names it.
+fn kind_name(kind: RayKind) -> &'static str {
+    match kind {
+        RayKind::Primary => "primary ray",
+        RayKind::Reflection => "reflection ray",
+        RayKind::Refraction => "refraction ray",
+    }
+}
+
+/// The letter of a bounce in a ray's path: R a reflection, T a refraction.
+pub(super) fn step(kind: RayKind) -> &'static str {
+    if kind == RayKind::Refraction {
+        "T"
+    } else {
+        "R"
+    }
 }
 
 /// The last line of a ray's block: what it brings back, and how.
@@ -171,8 +238,9 @@ fn end_text(end: End) -> &'static str {
     }
 }
 
-/// The hit: which object, where, which way the surface faces.
-fn write_hit(out: &mut String, hit: &HitNode, pad: &str) {
+/// The hit: which object, where, which way the surface faces (in brief:
+/// the first line only).
+fn write_hit(out: &mut String, hit: &HitNode, pad: &str, brief: bool) {
     let side = match hit.side {
         Side::Front => "front side (d·n < 0)",
         Side::Back => "back side (d·n > 0)",
@@ -185,6 +253,9 @@ fn write_hit(out: &mut String, hit: &HitNode, pad: &str) {
         hit.material,
         num(hit.t)
     );
+    if brief {
+        return;
+    }
     if let Some([t0, t1]) = hit.roots {
         let _ = writeln!(
             out,
@@ -205,6 +276,55 @@ fn write_hit(out: &mut String, hit: &HitNode, pad: &str) {
         vec3(hit.normal),
         vec3(hit.facing_normal)
     );
+}
+
+/// Each light's lines and the hit's local light.
+fn write_lights(out: &mut String, ray: &RayNode, tracer: &TracerInfo, pad: &str) {
+    for light in &ray.lights {
+        write_light(out, light, tracer, pad);
+    }
+    if let Some(local) = ray.local {
+        let _ = writeln!(
+            out,
+            "{pad}  local light (sum of the lights): {}",
+            vec3(local)
+        );
+    }
+}
+
+/// The lights in brief, on one line: what each does, and their sum.
+fn write_lights_briefly(out: &mut String, ray: &RayNode, pad: &str) {
+    let Some(local) = ray.local else { return };
+    let lights: Vec<String> = ray.lights.iter().map(light_briefly).collect();
+    let _ = writeln!(
+        out,
+        "{pad}  lights: {} → local light {}",
+        lights.join("; "),
+        vec3(local)
+    );
+}
+
+/// One light in brief: whether it reaches the point, and what it adds.
+fn light_briefly(light: &LightNode) -> String {
+    let name = format!("{} ({})", light.light, light.kind);
+    let adds = vec3(light.adds);
+    match light.status {
+        LightStatus::Ambient => format!("{name} adds {adds}"),
+        LightStatus::Dark => format!("{name} dark here"),
+        LightStatus::Behind => format!("{name} behind the surface"),
+        LightStatus::AddsNothing => format!("{name} adds nothing"),
+        LightStatus::Free => format!("{name} free, adds {adds}"),
+        LightStatus::Blocked => {
+            let by = light
+                .shadow_ray
+                .as_ref()
+                .and_then(|s| s.blocked_by.as_ref());
+            match by {
+                Some(o) => format!("{name} blocked by object {}", o.object),
+                None => format!("{name} blocked"),
+            }
+        }
+    }
 }
 
 /// One light: where it is, whether it is blocked, what it adds.
@@ -268,9 +388,20 @@ fn shadow_text(light: &LightNode, tracer: &TracerInfo) -> String {
     }
 }
 
-/// How a transparent surface splits the light: Snell, TIR, Fresnel.
-fn write_refraction(out: &mut String, r: &RefractionNode, pad: &str) {
+/// How a transparent surface splits the light: Snell, TIR, Fresnel (in
+/// brief: the indices and the split, on one line).
+fn write_refraction(out: &mut String, r: &RefractionNode, pad: &str, brief: bool) {
     let way = if r.entering { "entering" } else { "leaving" };
+    if brief {
+        let _ = writeln!(
+            out,
+            "{pad}  transparent, {way} the object (n₁ = {} → n₂ = {}): {}",
+            num(r.n1),
+            num(r.n2),
+            share_text(r)
+        );
+        return;
+    }
     let _ = writeln!(
         out,
         "{pad}  transparent: {way} the object, n₁ = {} → n₂ = {}, η = {}, cos θ₁ = {}, sin²θ₂ = η²(1 − cos²θ₁) = {}",
@@ -280,22 +411,25 @@ fn write_refraction(out: &mut String, r: &RefractionNode, pad: &str) {
         num(r.cos_theta1),
         num(r.sin2_theta2)
     );
-    let share = if r.total_internal_reflection {
-        format!(
+    let _ = writeln!(out, "{pad}    {}", share_text(r));
+}
+
+/// How the light is shared between the mirror ray and the refracted ray.
+fn share_text(r: &RefractionNode) -> String {
+    if r.total_internal_reflection {
+        return format!(
             "total internal reflection (sin²θ₂ > 1): no refracted ray; the mirror ray gets reflectance + T = {}",
             vec3(r.reflected_weight)
-        )
-    } else {
-        let fresnel = r.fresnel.map_or("no Fresnel term, R = 0".to_string(), |f| {
-            format!("Schlick's R = {}", num(f))
-        });
-        let refracted = r.refracted_weight.map_or([0.0; 3], |w| w);
-        format!(
-            "T = {}, {fresnel}: mirror ray reflectance + T·R = {}, refracted ray T·(1 − R) = {}",
-            num(r.transparency),
-            vec3(r.reflected_weight),
-            vec3(refracted)
-        )
-    };
-    let _ = writeln!(out, "{pad}    {share}");
+        );
+    }
+    let fresnel = r.fresnel.map_or("no Fresnel term, R = 0".to_string(), |f| {
+        format!("Schlick's R = {}", num(f))
+    });
+    let refracted = r.refracted_weight.map_or([0.0; 3], |w| w);
+    format!(
+        "T = {}, {fresnel}: mirror ray reflectance + T·R = {}, refracted ray T·(1 − R) = {}",
+        num(r.transparency),
+        vec3(r.reflected_weight),
+        vec3(refracted)
+    )
 }
