@@ -6,10 +6,12 @@
 //! when undoing it nearly passes and cuts the differing pixels by a large
 //! factor: a correct picture passes before any of this, and an unrelated
 //! error survives every undoing. When none fits, [`super::region`] says
-//! where the picture differs.
+//! where the picture differs, what the reference shows there and which
+//! lights light it.
 
 use image::{Rgb, RgbImage, imageops};
 
+use super::lights::LightMap;
 use super::objects::ObjectMap;
 use super::region::{Region, locate};
 use crate::workbench::compare::{Tolerance, Verdict, compare};
@@ -92,12 +94,14 @@ struct Candidate {
 }
 
 /// Explains why `actual` fails against `expected`: the usual mistake that
-/// fits, else where it differs. None for a wrong size that is not a swap
-/// (the size message says it all).
+/// fits, else where it differs (with what the reference's maps say of that
+/// region). None for a wrong size that is not a swap (the size message
+/// says it all).
 pub fn diagnose(
     expected: &RgbImage,
     actual: &RgbImage,
     objects: Option<&ObjectMap>,
+    lights: Option<&LightMap>,
 ) -> Option<Diagnosis> {
     let tolerance = Tolerance::for_size(expected.width(), expected.height());
     let named = |mistake, remaining| Diagnosis::Mistake {
@@ -117,7 +121,7 @@ pub fn diagnose(
         .min_by_key(|c| c.remaining);
     Some(match best {
         Some(c) => named(c.mistake, Some(c.remaining)),
-        None => Diagnosis::Differs(locate(expected, actual, tolerance, objects)),
+        None => Diagnosis::Differs(locate(expected, actual, tolerance, objects, lights)),
     })
 }
 

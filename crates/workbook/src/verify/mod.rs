@@ -4,13 +4,20 @@
 //! The reference is the chapter's default scene rendered at 160×120 (the
 //! snapshot size); the comparison is the snapshot tolerance of every test.
 //! A failing picture is diagnosed ([`diagnose`]): the usual mistake that
-//! explains it is named with its fix, or else the region where it differs
-//! and the objects the reference shows there ([`objects`]).
+//! explains it is named with its fix, or else the region where it differs,
+//! the objects the reference shows there ([`objects`]) and the lights that
+//! light it ([`lights`]).
+//!
+//! `workbook verify --tree CHAPTER X,Y MINE.json` checks one pixel's ray
+//! tree instead, ray by ray ([`tree`]).
 
 mod advice;
 pub mod diagnose;
+pub mod lights;
 pub mod objects;
 pub mod region;
+mod runs;
+pub mod tree;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -21,6 +28,7 @@ use crate::toolkit::image::{encode_png, write_atomically};
 use crate::workbench::chapters::{self, ChapterEntry, VerifyReference};
 use crate::workbench::compare::{Tolerance, Verdict, compare, diff_image};
 pub use diagnose::{Corner, Diagnosis, Mistake, Swap, diagnose};
+pub use lights::LightMap;
 pub use objects::{ObjectMap, ObjectName, shape_name};
 
 /// A chapter's reference picture for its default scene.
@@ -33,6 +41,9 @@ pub struct Reference {
     /// Which object each pixel of the reference shows,
     /// `snapshots/<folder>/<snapshot>.objects.txt`, if there is one.
     pub objects: Option<&'static str>,
+    /// Which lights light each pixel of the reference,
+    /// `snapshots/<folder>/<snapshot>.lights.txt`, if there is one (chapter 3 on).
+    pub lights: Option<&'static str>,
 }
 
 /// The reference pictures, built into the binary so that it works from
@@ -62,6 +73,21 @@ impl Reference {
         )
     }
 
+    /// Where the light map of this reference lives, under snapshots/.
+    pub fn lights_path(&self) -> String {
+        format!(
+            "{}/{}.lights.txt",
+            self.chapter.folder,
+            self.verify().snapshot
+        )
+    }
+
+    /// The light map, if there is one and it can be read (tests/verify/lights.rs
+    /// checks that every reference whose tracer lights has a current one).
+    pub fn light_map(&self) -> Option<LightMap> {
+        LightMap::parse(self.lights?).ok()
+    }
+
     /// The object map, if there is one and it can be read (tests/verify/object_maps.rs
     /// checks that every reference has a current one).
     pub fn object_map(&self) -> Option<ObjectMap> {
@@ -86,11 +112,15 @@ pub fn references() -> Vec<Reference> {
             let file = SNAPSHOTS
                 .get_file(&path)
                 .unwrap_or_else(|| panic!("snapshots/{path}, named in chapters.toml, is missing"));
-            let objects = format!("{}/{}.objects.txt", chapter.folder, verify.snapshot);
+            let text = |extension: &str| {
+                let path = format!("{}/{}.{extension}", chapter.folder, verify.snapshot);
+                SNAPSHOTS.get_file(&path).and_then(|f| f.contents_utf8())
+            };
             Some(Reference {
                 chapter,
                 png: file.contents(),
-                objects: SNAPSHOTS.get_file(&objects).and_then(|f| f.contents_utf8()),
+                objects: text("objects.txt"),
+                lights: text("lights.txt"),
             })
         })
         .collect()
@@ -140,7 +170,12 @@ pub fn verify(reference: &Reference, image: &Path, diff: &Path) -> Result<Outcom
     let diagnosis = if verdict.passed() {
         None
     } else {
-        diagnose(&expected, &actual, reference.object_map().as_ref())
+        diagnose(
+            &expected,
+            &actual,
+            reference.object_map().as_ref(),
+            reference.light_map().as_ref(),
+        )
     };
     Ok(Outcome {
         verdict,
@@ -152,21 +187,47 @@ pub fn verify(reference: &Reference, image: &Path, diff: &Path) -> Result<Outcom
 /// `workbook verify`: checks your own tracer's picture against a chapter's reference.
 #[derive(clap::Args, Debug, Clone)]
 pub struct VerifyArgs {
+    /// Check one pixel's ray tree instead of a picture:
+    /// `verify --tree CHAPTER X,Y MINE.json`, MINE.json being the tree your
+    /// tracer wrote for pixel X,Y of the chapter's default scene at its own
+    /// size (the schema: book/appendix/ray-tree.md). It names the first
+    /// ray and field that differ.
+    #[arg(long)]
+    pub tree: bool,
+
     /// The chapter: its number (3), folder (03-lambert) or package (ch03-lambert).
     pub chapter: String,
 
     /// Your picture of the chapter's default scene, 160×120 pixels, as PNG
-    /// (each channel clamped to [0, 1] and stored as round(255·v), no gamma).
-    pub image: PathBuf,
+    /// (each channel clamped to [0, 1] and stored as round(255·v), no
+    /// gamma); with --tree, the pixel X,Y and your tree's JSON file.
+    #[arg(value_name = "IMAGE.png | X,Y MINE.json", num_args = 1..=2, required = true)]
+    pub files: Vec<PathBuf>,
 
     /// Where to write the diff picture (reference | mask | yours).
     /// Default: beside your picture, as NAME.diff.png.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "tree")]
     pub diff: Option<PathBuf>,
+
+    /// With --tree: compare with this tree (as a chapter binary writes it
+    /// with --pixel X,Y --json) instead of the built-in reference, for a
+    /// pixel or scene that has none.
+    #[arg(long, requires = "tree", value_name = "REFERENCE.json")]
+    pub against: Option<PathBuf>,
 }
 
-/// Runs `workbook verify`: exit code 0 when the picture passes.
+/// Runs `workbook verify`: exit code 0 when the picture (or tree) passes.
 pub fn main(args: &VerifyArgs) -> ExitCode {
+    if args.tree {
+        return main_tree(args);
+    }
+    let [image] = args.files.as_slice() else {
+        eprintln!(
+            "error: verify takes the chapter and your picture (IMAGE.png); \
+             to check a ray tree: verify --tree CHAPTER X,Y MINE.json"
+        );
+        return ExitCode::FAILURE;
+    };
     let Some(reference) = reference(&args.chapter) else {
         let names: Vec<&str> = references()
             .iter()
@@ -182,13 +243,39 @@ pub fn main(args: &VerifyArgs) -> ExitCode {
     let diff = args
         .diff
         .clone()
-        .unwrap_or_else(|| args.image.with_extension("diff.png"));
-    match verify(&reference, &args.image, &diff) {
+        .unwrap_or_else(|| image.with_extension("diff.png"));
+    match verify(&reference, image, &diff) {
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE
         }
         Ok(outcome) => report(&reference, &outcome),
+    }
+}
+
+/// `workbook verify --tree CHAPTER X,Y MINE.json`.
+fn main_tree(args: &VerifyArgs) -> ExitCode {
+    let [pixel, mine] = args.files.as_slice() else {
+        eprintln!(
+            "error: verify --tree takes the chapter, the pixel and your tree: verify --tree 6 160,110 mine.json"
+        );
+        return ExitCode::FAILURE;
+    };
+    let outcome = tree::parse_pixel(&pixel.to_string_lossy())
+        .and_then(|pixel| tree::verify_tree(&args.chapter, pixel, mine, args.against.as_deref()));
+    match outcome {
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+        Ok(outcome) => {
+            println!("{outcome}");
+            if outcome.passed() {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::FAILURE
+            }
+        }
     }
 }
 

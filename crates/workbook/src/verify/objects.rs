@@ -23,6 +23,8 @@
 /// `triangle`, `smooth_triangle`, `cone`), so that verify and `--pixel` agree.
 pub use crate::workbench::ray_tree::shape_name;
 
+use super::runs;
+
 /// One object of a scene, as a student recognises it.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ObjectName {
@@ -71,7 +73,7 @@ impl ObjectMap {
             text += &format!("object {index}: {object}\n");
         }
         for (y, row) in self.pixels.chunks(self.width as usize).enumerate() {
-            text += &format!("row {y}: {}\n", runs(row));
+            text += &format!("row {y}: {}\n", row_text(row));
         }
         text
     }
@@ -90,7 +92,7 @@ impl ObjectMap {
         {
             let (key, rest) = line.split_once(' ').unwrap_or((line, ""));
             match key {
-                "size" => (map.width, map.height) = parse_size(rest)?,
+                "size" => (map.width, map.height) = runs::parse_size(rest)?,
                 "object" => map.objects.push(parse_object(rest)?),
                 "row" => map.pixels.extend(parse_row(rest, map.width)?),
                 _ => return Err(format!("unknown line {line:?}")),
@@ -120,29 +122,11 @@ impl ObjectMap {
 }
 
 /// A row as runs of the same object: `-*3 0*5`.
-fn runs(row: &[Option<usize>]) -> String {
-    let mut runs: Vec<(Option<usize>, usize)> = Vec::new();
-    for &pixel in row {
-        match runs.last_mut() {
-            Some((object, count)) if *object == pixel => *count += 1,
-            _ => runs.push((pixel, 1)),
-        }
-    }
-    let text: Vec<String> = runs
-        .iter()
-        .map(|(object, count)| match object {
-            Some(index) => format!("{index}*{count}"),
-            None => format!("-*{count}"),
-        })
-        .collect();
-    text.join(" ")
-}
-
-/// `160 120`.
-fn parse_size(text: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("bad size {text:?}");
-    let (w, h) = text.split_once(' ').ok_or_else(bad)?;
-    Ok((w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?))
+fn row_text(row: &[Option<usize>]) -> String {
+    runs::encode(row, |object| match object {
+        Some(index) => index.to_string(),
+        None => "-".into(),
+    })
 }
 
 /// `3: sphere, material red` (the index must be the next one).
@@ -158,25 +142,10 @@ fn parse_object(text: &str) -> Result<ObjectName, String> {
 
 /// `7: -*3 0*157`: the runs of one row, which must add up to `width`.
 fn parse_row(text: &str, width: u32) -> Result<Vec<Option<usize>>, String> {
-    let bad = || format!("bad row {text:?}");
-    let (_, runs) = text.split_once(": ").ok_or_else(bad)?;
-    let mut row = Vec::with_capacity(width as usize);
-    for run in runs.split(' ') {
-        let (object, count) = run.split_once('*').ok_or_else(bad)?;
-        let object = match object {
-            "-" => None,
-            index => Some(index.parse().map_err(|_| bad())?),
-        };
-        let count: usize = count.parse().map_err(|_| bad())?;
-        row.extend(std::iter::repeat_n(object, count));
-    }
-    if row.len() != width as usize {
-        return Err(format!(
-            "a row of {} pixels, not {width}: {text:?}",
-            row.len()
-        ));
-    }
-    Ok(row)
+    runs::decode(text, width, |object| match object {
+        "-" => Some(None),
+        index => index.parse().ok().map(Some),
+    })
 }
 
 #[cfg(test)]

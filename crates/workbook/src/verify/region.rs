@@ -1,11 +1,13 @@
 //! Where a picture that no usual mistake explains differs from the
-//! reference, and which of the scene's objects the reference shows there:
-//! a student then knows which intersection or which material to look at.
+//! reference, which of the scene's objects the reference shows there and
+//! which lights light it: a student then knows which intersection, which
+//! material or which light to look at.
 
 use std::fmt;
 
 use image::RgbImage;
 
+use super::lights::LightMap;
 use super::objects::{ObjectMap, ObjectName};
 use crate::workbench::compare::Tolerance;
 
@@ -37,6 +39,22 @@ pub struct Region {
     /// What the reference shows at those pixels, the most first; None
     /// without an object map.
     pub shown: Option<Vec<Shown>>,
+    /// The lights that light those pixels in the reference, the light
+    /// most particular to them first; None without a light map.
+    pub lit: Option<Vec<Lit>>,
+}
+
+/// A light and the share of the differing pixels it lights.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lit {
+    /// Its index in the scene.
+    pub light: usize,
+    /// `point` or `spot` (ambient light is never listed).
+    pub kind: String,
+    /// The share of the differing pixels it lights, from 0 to 1...
+    pub share: f64,
+    /// ...and of the whole picture.
+    pub overall: f64,
 }
 
 /// An object (or the background) and the share of the differing pixels it covers.
@@ -58,6 +76,7 @@ pub fn locate(
     actual: &RgbImage,
     tolerance: Tolerance,
     objects: Option<&ObjectMap>,
+    lights: Option<&LightMap>,
 ) -> Region {
     let all: Vec<Differing> = expected
         .enumerate_pixels()
@@ -84,6 +103,7 @@ pub fn locate(
         differing: pixels.len(),
         mean: sum / pixels.len().max(1) as f64,
         shown: objects.map(|map| shown(map, &pixels)),
+        lit: lights.map(|map| lit(map, &pixels)),
     }
 }
 
@@ -146,6 +166,57 @@ fn shown(map: &ObjectMap, pixels: &[Differing]) -> Vec<Shown> {
         .collect()
 }
 
+/// The lights that light at least 1% of the pixels in the reference, the
+/// one most particular to them first: the largest ratio of its share of
+/// them to its share of the whole picture (a spot's cone before the point
+/// light that lights everything).
+fn lit(map: &LightMap, pixels: &[Differing]) -> Vec<Lit> {
+    let overall = map.shares();
+    let here = map.shares_of(pixels.iter().map(|&(x, y, _)| map.at(x, y)));
+    let mut lit: Vec<Lit> = here
+        .iter()
+        .enumerate()
+        .filter(|&(_, &share)| share >= 0.01)
+        .map(|(light, &share)| Lit {
+            light,
+            kind: map.lights[light].clone(),
+            share,
+            overall: overall[light],
+        })
+        .collect();
+    let lift = |l: &Lit| l.share / l.overall.max(f64::MIN_POSITIVE);
+    lit.sort_by(|a, b| lift(b).total_cmp(&lift(a)).then(a.light.cmp(&b.light)));
+    lit
+}
+
+/// "lit by light 2 (spot) in 85% of it (14% of the whole picture), by
+/// light 1 (point) in 97% of it (81%)".
+fn lights_lit(lit: &[Lit]) -> String {
+    if lit.is_empty() {
+        return "only ambient light lights it".into();
+    }
+    let percent = |v: f64| (100.0 * v).round();
+    let listed: Vec<String> = lit
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            let whole = if i == 0 {
+                "% of the whole picture"
+            } else {
+                "%"
+            };
+            format!(
+                "light {} ({}) in {}% of it ({}{whole})",
+                l.light,
+                l.kind,
+                percent(l.share),
+                percent(l.overall)
+            )
+        })
+        .collect();
+    format!("ambient light aside, it is lit by {}", listed.join(", by "))
+}
+
 impl fmt::Display for Area {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
@@ -199,8 +270,12 @@ impl fmt::Display for Region {
             self.differing, self.mean
         )?;
         match &self.shown {
-            Some(shown) => write!(f, "; the reference shows {} there.", objects_shown(shown)),
-            None => write!(f, "."),
+            Some(shown) => write!(f, "; the reference shows {} there.", objects_shown(shown))?,
+            None => write!(f, ".")?,
+        }
+        match &self.lit {
+            Some(lit) => write!(f, "\nIn the reference, {}.", lights_lit(lit)),
+            None => Ok(()),
         }
     }
 }

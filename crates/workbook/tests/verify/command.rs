@@ -60,3 +60,76 @@ fn the_command_names_the_mistake_and_its_fix() {
     );
     assert!(stdout.contains("\nfix: row 0 is the top"), "{stdout}");
 }
+
+/// `workbook verify --tree` run as a command, on chapter 6's glass pixel.
+fn verify_tree(args: &[&str], tree: &serde_json::Value, name: &str) -> (bool, String, String) {
+    let path = super::temp(name);
+    std::fs::write(&path, tree.to_string()).unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_workbook"))
+        .args(["verify", "--tree"])
+        .args(args)
+        .arg(&path)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    println!("{stdout}{stderr}");
+    (output.status.success(), stdout, stderr)
+}
+
+#[test]
+fn the_tree_command_passes_the_reference_and_names_a_difference() {
+    let text = workbook::verify::tree::reference_tree("06-refraction", 160, 110).unwrap();
+    let mut tree: serde_json::Value = serde_json::from_str(text).unwrap();
+    let (passed, stdout, _) = verify_tree(&["6", "160,110"], &tree, "glass.json");
+    assert!(
+        passed && stdout.starts_with("PASS: chapter 06-refraction, pixel (160, 110)"),
+        "{stdout}"
+    );
+    *tree.pointer_mut("/primary/secondary/1/hit/t").unwrap() = serde_json::json!(2.5);
+    let (passed, stdout, _) = verify_tree(&["ch06-refraction", "160,110"], &tree, "glass-t.json");
+    assert!(!passed);
+    assert!(stdout.starts_with("FAIL"), "{stdout}");
+    assert!(
+        stdout.contains("at primary → refraction: hit.t differs"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("1e-4 relative"), "{stdout}");
+}
+
+#[test]
+fn the_tree_command_says_what_it_takes() {
+    let tree = serde_json::json!({});
+    let (passed, _, stderr) = verify_tree(&["6"], &tree, "no-pixel.json");
+    assert!(!passed);
+    assert!(
+        stderr.contains("verify --tree 6 160,110 mine.json"),
+        "{stderr}"
+    );
+    let (passed, _, stderr) = verify_tree(&["6", "160x110"], &tree, "bad-pixel.json");
+    assert!(!passed);
+    assert!(stderr.contains("expected the pixel as X,Y"), "{stderr}");
+    let (passed, _, stderr) = verify_tree(&["6", "160,110"], &tree, "empty.json");
+    assert!(!passed);
+    assert!(
+        stderr.contains("your tree has no `primary` ray"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn the_tree_command_compares_with_another_reference() {
+    let text = workbook::verify::tree::reference_tree("05-reflection", 162, 128).unwrap();
+    let against = super::temp("against.json");
+    std::fs::write(&against, text).unwrap();
+    let tree: serde_json::Value = serde_json::from_str(text).unwrap();
+    let against = against.to_str().unwrap();
+    let (passed, stdout, _) = verify_tree(&["5", "162,128", "--against", against], &tree, "a.json");
+    assert!(passed, "{stdout}");
+    let (passed, _, stderr) = verify_tree(&["5", "1,2", "--against", against], &tree, "b.json");
+    assert!(!passed);
+    assert!(
+        stderr.contains("is of pixel (162, 128), not (1, 2)"),
+        "{stderr}"
+    );
+}

@@ -10,13 +10,21 @@
 //! * `camera`: mistakes of the camera that verify names (rays through pixel
 //!   corners, the fov taken as horizontal, a swapped size);
 //! * `unnamed`: wrong pictures that name no mistake, and what verify says instead;
-//! * `object_maps`: the object maps beside the references are current.
+//! * `object_maps`: the object maps beside the references are current;
+//! * `lights`: so are the light maps, and verify names the light of a
+//!   region (a wrong spot ramp);
+//! * `trees`: `verify --tree`: the reference trees are current, and a
+//!   student's tree that differs is named ray by ray and field by field;
+//! * `chapters`: each chapter's ray tree, as its binary builds it.
 //!
 //! Here: verifying a picture, and chapter 3's scene, which several use.
 
 mod camera;
+mod chapters;
 mod command;
+mod lights;
 mod object_maps;
+mod trees;
 mod unnamed;
 mod verdicts;
 mod writing;
