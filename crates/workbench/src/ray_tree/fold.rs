@@ -3,8 +3,8 @@
 //! group of them into one summary. Folding changes what is shown, never
 //! what was traced: the JSON keeps every ray.
 
-use super::text::step;
-use super::{RayKind, RayNode, vec3};
+use super::words::{step, vec3};
+use super::{RayKind, RayNode};
 
 /// Which rays fold: those deeper than `depth` bounces, and those whose
 /// path weight is below `weight`, each with every ray after it.

@@ -22,11 +22,12 @@ mod nodes;
 pub mod record;
 mod svg;
 mod text;
+mod words;
 
 pub use fold::{Fold, Folded, count_rays};
 pub use nodes::{Arriving, HitFacts, Terms};
 pub use svg::to_svg;
-pub use text::{num, vec3};
+pub use words::{num, vec3};
 
 /// The whole tree of one pixel, as `--pixel X,Y --json` writes it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
