@@ -1,143 +1,22 @@
-//! Nothing panics on any input: mutated scene files, TOML and NFF, are either
-//! refused with an error or rendered.
+//! Nothing panics on any input: mutated scene files, TOML and NFF, and
+//! mutated OBJ meshes named by a TOML scene, are either refused with an
+//! error that names the right file or rendered to finite pixels.
+//!
+//! The mutations and their seeds are in `scene_fuzz/mutate.rs`. Besides the
+//! few thousand cases each `cargo test` runs, `scene_fuzz/long.rs` fuzzes
+//! for as long as `RAYBOOK_FUZZ_SECONDS` asks (see there): opt-in, never in CI.
 
 mod common;
+#[path = "scene_fuzz/long.rs"]
+mod long;
+#[path = "scene_fuzz/mutate.rs"]
+mod mutate;
 
+use mutate::{Mutation, apply, mutated, mutation};
 use proptest::prelude::*;
 use raybook::render;
 use raybook::scene_files::{self, SceneError};
 use raybook::toolkit::Scene;
-use raybook::workbench::snapshot::workspace_root;
-
-/// Every scene file of the repository, as mutation seeds.
-fn seeds() -> Vec<String> {
-    (common::chapter_scene_files().iter())
-        .map(|path| std::fs::read_to_string(path).unwrap())
-        .collect()
-}
-
-/// Tokens that are likely to break something when dropped into a scene.
-const TOKENS: &[&str] = &[
-    "nan",
-    "inf",
-    "-inf",
-    "-1",
-    "0",
-    "0.0",
-    "1e39",
-    "1e-45",
-    "16385",
-    "[",
-    "]",
-    "\"",
-    "=",
-    ",",
-    "\n",
-    "[[objects]]",
-    "type = \"sphere\"",
-    "[0, 0, 0]",
-    "[1, 2]",
-    "[1, 2, 3, 4]",
-    "material = \"nope\"",
-    "true",
-    "#",
-    "{",
-    "}",
-    ".",
-    "é",
-    "\u{0}",
-];
-
-#[derive(Debug, Clone)]
-enum Mutation {
-    Insert(usize, usize),
-    Delete(usize, usize),
-    Replace(usize, usize, usize),
-}
-
-/// The small SPD scenes (NFF) of the repository, as mutation seeds.
-fn nff_seeds() -> Vec<String> {
-    ["balls-1.nff", "balls-2.nff", "mount-3.nff", "tetra-3.nff"]
-        .map(|name| std::fs::read_to_string(workspace_root().join("scenes/spd").join(name)))
-        .map(Result::unwrap)
-        .to_vec()
-}
-
-/// NFF's tokens that are likely to break something.
-const NFF_TOKENS: &[&str] = &[
-    "nan",
-    "inf",
-    "-1",
-    "0",
-    "0 0 0",
-    "1e39",
-    "1e-45",
-    "16385",
-    "3.5",
-    "\n",
-    "#",
-    "é",
-    "\u{0}",
-    "\nv\n",
-    "\np 3\n",
-    "\npp 3\n",
-    "\ns 0 0 0 1\n",
-    "\nf 1 1 1 1 0 1 0 1\n",
-    "\nl 1 1 1\n",
-    "\nc\n",
-    "\nresolution 1 1\n",
-    "\nangle 179.99999\n",
-    "\nup 0 0 0\n",
-];
-
-fn apply(text: &str, m: &Mutation) -> String {
-    apply_with(text, m, TOKENS)
-}
-
-fn apply_with(text: &str, m: &Mutation, tokens: &[&str]) -> String {
-    let cut = |i: usize| {
-        let mut i = i % (text.len() + 1);
-        while !text.is_char_boundary(i) {
-            i -= 1;
-        }
-        i
-    };
-    match *m {
-        Mutation::Insert(at, token) => {
-            let at = cut(at);
-            format!(
-                "{}{}{}",
-                &text[..at],
-                tokens[token % tokens.len()],
-                &text[at..]
-            )
-        }
-        Mutation::Delete(at, len) => {
-            let (a, b) = (cut(at), cut(at.saturating_add(len % 40)));
-            let (a, b) = (a.min(b), a.max(b));
-            format!("{}{}", &text[..a], &text[b..])
-        }
-        Mutation::Replace(at, len, token) => {
-            let (a, b) = (cut(at), cut(at.saturating_add(len % 8)));
-            let (a, b) = (a.min(b), a.max(b));
-            format!(
-                "{}{}{}",
-                &text[..a],
-                tokens[token % tokens.len()],
-                &text[b..]
-            )
-        }
-    }
-}
-
-fn mutation() -> impl Strategy<Value = Mutation> {
-    prop_oneof![
-        (any::<usize>(), any::<usize>()).prop_map(|(a, t)| Mutation::Insert(a, t)),
-        (any::<usize>(), any::<usize>()).prop_map(|(a, l)| Mutation::Delete(a, l)),
-        (any::<usize>(), any::<usize>(), any::<usize>())
-            .prop_map(|(a, l, t)| Mutation::Replace(a, l, t)),
-    ]
-}
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
@@ -147,29 +26,27 @@ proptest! {
         seed in any::<usize>(),
         mutations in prop::collection::vec(mutation(), 1..4),
     ) {
-        let seeds = seeds();
-        let mut text = seeds[seed % seeds.len()].clone();
-        for m in &mutations {
-            text = apply(&text, m);
-        }
+        let text = mutated(&mutate::seeds(), seed, &mutations, mutate::TOKENS);
         check(scene_files::parse(&text, "fuzz.toml"), "fuzz.toml")?;
     }
 }
 
-/// What a parser made of a mutated scene: rendered small, or refused well.
-fn check(parsed: Result<Scene, SceneError>, file: &str) -> Result<(), TestCaseError> {
+/// What a parser made of a mutated scene: rendered small (`true`), or
+/// refused well (`false`).
+fn check(parsed: Result<Scene, SceneError>, file: &str) -> Result<bool, TestCaseError> {
     match parsed {
         Ok(scene) => {
             // What parses must render, without a panic, to finite values.
             let (image, _) = render(&scene.with_size(8, 6), || {});
             prop_assert!(image.pixels.iter().all(|c| c.is_finite()));
+            Ok(true)
         }
         Err(e) => {
             prop_assert_eq!(e.file.as_str(), file);
             prop_assert!(!e.message.is_empty());
+            Ok(false)
         }
     }
-    Ok(())
 }
 
 proptest! {
@@ -180,20 +57,55 @@ proptest! {
         seed in any::<usize>(),
         mutations in prop::collection::vec(mutation(), 1..4),
     ) {
-        let seeds = nff_seeds();
-        let mut text = seeds[seed % seeds.len()].clone();
-        for m in &mutations {
-            text = apply_with(&text, m, NFF_TOKENS);
-        }
+        let text = mutated(&mutate::nff_seeds(), seed, &mutations, mutate::NFF_TOKENS);
         check(raybook::nff::parse(&text, "fuzz.nff"), "fuzz.nff")?;
     }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn mutated_meshes_never_panic(
+        seed in any::<usize>(),
+        mutations in prop::collection::vec(mutation(), 1..4),
+    ) {
+        let obj = mutated(&mutate::obj_seeds(), seed, &mutations, mutate::OBJ_TOKENS);
+        check_mesh(&obj)?;
+    }
+}
+
+/// A scene of the mesh `obj` (in a file, as a scene names it) loaded, and
+/// checked as [`check`] checks a scene; an error about the mesh names the
+/// scene's line and, first in its message, the mesh's file.
+fn check_mesh(obj: &str) -> Result<bool, TestCaseError> {
+    let dir = mutate::CaseDir::new();
+    let scene = dir.scene_with_mesh(obj);
+    let loaded = scene_files::load_within(&scene, None);
+    if let Err(e) = &loaded {
+        prop_assert!(e.line.is_some(), "{}", e);
+        let mesh = dir.0.join("mesh.obj");
+        let named = e.message.starts_with(&format!("{}:", mesh.display()));
+        prop_assert!(e.path != "objects[0].path" || named, "{}", e);
+    }
+    check(loaded, &scene.display().to_string())
+}
+
+/// The long run, when `RAYBOOK_FUZZ_SECONDS` asks for it (`scene_fuzz/long.rs`).
+#[test]
+fn fuzz_for_the_seconds_asked() {
+    long::run(|format, text| match format {
+        long::Format::Toml => check(scene_files::parse(text, "fuzz.toml"), "fuzz.toml"),
+        long::Format::Nff => check(raybook::nff::parse(text, "fuzz.nff"), "fuzz.nff"),
+        long::Format::Obj => check_mesh(text),
+    });
 }
 
 #[test]
 fn a_mutation_the_fuzzer_found_is_refused_without_a_panic() {
     // Found by `mutated_scenes_never_panic`: the error's span was mapped
     // through a checker with no pieces of text at all.
-    let seeds = seeds();
+    let seeds = mutate::seeds();
     let text = &seeds[11_772_836_615_416_564_769 % seeds.len()];
     let mutation = Mutation::Replace(
         681_774_403_322_263_074,
@@ -202,4 +114,14 @@ fn a_mutation_the_fuzzer_found_is_refused_without_a_panic() {
     );
     let text = apply(text, &mutation);
     check(scene_files::parse(&text, "fuzz.toml"), "fuzz.toml").unwrap();
+}
+
+/// The mesh seeds themselves load: the mutations start from good meshes.
+#[test]
+fn the_mesh_seeds_load() {
+    for obj in mutate::obj_seeds() {
+        let dir = mutate::CaseDir::new();
+        let scene = scene_files::load_within(dir.scene_with_mesh(&obj), None).unwrap();
+        assert!(!scene.objects.is_empty());
+    }
 }

@@ -26,6 +26,7 @@ struct Cli {
 enum Command {
     /// Renders a scene file (TOML, or NFF if it ends in .nff) with the
     /// complete tracer.
+    #[command(mut_arg("output", |arg| arg.value_name("OUT.png").help(OUTPUT_HELP)))]
     Render(RenderArgs),
     /// Times the SPD scenes, against POV-Ray where it is installed (with
     /// --primary: primary rays per thread, against Embree).
@@ -34,6 +35,13 @@ enum Command {
     /// pixel and effects, as a table, a CSV and a plot.
     Accuracy(measure::accuracy::AccuracyArgs),
 }
+
+/// `raybook render -o`: what the chapter binaries' `-o` says, and the
+/// formats that `render.rs` writes besides PNG.
+const OUTPUT_HELP: &str = "Where to write the picture, in the format its extension names: \
+    .png, .ppm (or .pnm), .bmp or .tga. Only a regular file is written over, replaced whole; \
+    a directory, a pipe or a device (even /dev/null) is refused. Default: <scene name>.png \
+    for a scene file, <chapter>.png for the default scene";
 
 fn main() -> ExitCode {
     raybook::workbench::cli::end_quietly_when_output_closes();
@@ -51,9 +59,13 @@ fn main() -> ExitCode {
     }
 }
 
-/// Renders with the complete tracer, or with `--pixel X,Y` prints that
-/// pixel's ray tree as chapter 8 traces it (the complete tracer's rays).
+/// Renders with the complete tracer and writes the picture in the format
+/// that `-o` names (`render.rs`), or with `--pixel X,Y` prints that pixel's
+/// ray tree as chapter 8 traces it (the complete tracer's rays).
 fn render_or_explain(args: &RenderArgs) -> ExitCode {
+    if args.pixel.is_none() {
+        return measure::render::run(args);
+    }
     run_or_explain(
         &CHAPTER,
         args,

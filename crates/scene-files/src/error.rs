@@ -46,15 +46,29 @@ impl SceneError {
         }
     }
 
-    /// A file that cannot be read at all.
-    pub(crate) fn io(file: &str, error: &std::io::Error) -> SceneError {
+    /// A file that cannot be read at all, and why.
+    pub(crate) fn unreadable(file: &str, why: impl fmt::Display) -> SceneError {
         SceneError::at(
             file,
             "",
             None,
             "",
-            format!("cannot read the scene file: {error}"),
+            format!("cannot read the scene file: {why}"),
         )
+    }
+
+    /// The error as shown, without the source line under it:
+    /// `file:line:column: path: message`. An error in a file that a scene
+    /// names (an OBJ mesh) becomes the message of the scene's error so.
+    pub fn headline(&self) -> String {
+        let mut headline = self.file.clone();
+        if let (Some(line), Some(column)) = (self.line, self.column) {
+            headline += &format!(":{line}:{column}");
+        }
+        if !self.path.is_empty() {
+            headline += &format!(": {}", self.path);
+        }
+        headline + ": " + &self.message
     }
 }
 
@@ -70,14 +84,7 @@ fn line_and_column(text: &str, offset: usize) -> (u32, u32) {
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.file)?;
-        if let (Some(line), Some(column)) = (self.line, self.column) {
-            write!(f, ":{line}:{column}")?;
-        }
-        if !self.path.is_empty() {
-            write!(f, ": {}", self.path)?;
-        }
-        write!(f, ": {}", self.message)?;
+        write!(f, "{}", self.headline())?;
         if let (Some(line), Some(column), Some(text)) = (self.line, self.column, &self.source_line)
         {
             let gutter = line.to_string().len();

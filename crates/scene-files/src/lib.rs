@@ -1,11 +1,13 @@
 //! Reads scene files into the toolkit's checked [`Scene`]: the workbook's
 //! TOML format (`file/`: its serde records, its self-checking values and
 //! their validation into a scene), the SPD scenes' NFF (`nff/`) and the OBJ
-//! meshes a TOML scene may name (`mesh.rs`). Both formats check with one
+//! meshes a TOML scene may name (`obj/`). Both formats check with one
 //! set of rules (`rules.rs`), and every error names the file, the line, the
-//! field and what would be valid (`error.rs`). Scenes of millions of
-//! objects are read in parts (`file/outline.rs`, `file/parts.rs`), and a
-//! scene too large for the machine is refused before it is read
+//! field and what would be valid (`error.rs`). Only regular files are read,
+//! the scene and the files it names (`input.rs`): a pipe or a device would
+//! never end. Scenes of millions of objects are read in parts
+//! (`file/outline.rs`, `file/parts.rs`), and a scene too large for the
+//! machine is refused before it is read, a mesh as it is read
 //! (`file/memory.rs`).
 //!
 //! ```
@@ -24,8 +26,9 @@
 
 mod error;
 mod file;
-mod mesh;
+mod input;
 pub mod nff;
+pub mod obj;
 mod rules;
 
 use std::path::Path;
@@ -57,15 +60,18 @@ pub fn load_within(
     parse_within(&text, &name, limit)
 }
 
-/// The text of the scene file at `path` and its name for messages; a file
-/// larger than `limit` is refused before it is read. Both formats read
-/// their files this way.
+/// The text of the scene file at `path` and its name for messages. Only a
+/// regular file is read (see `input.rs`: a pipe or a device would never
+/// end), and one larger than `limit` is refused before it is read. Both
+/// formats read their files this way.
 fn read_within(path: &Path, limit: Option<&MemoryLimit>) -> Result<(String, String), SceneError> {
+    use std::io::Read;
     let name = path.display().to_string();
-    let io = |e| SceneError::io(&name, &e);
-    let bytes = std::fs::metadata(path).map_err(io)?.len();
+    let (mut file, bytes) =
+        input::open_regular(path).map_err(|why| SceneError::unreadable(&name, why))?;
     file::check_file_size(&name, bytes, limit)?;
-    let text = std::fs::read_to_string(path).map_err(io)?;
+    let mut text = String::with_capacity(usize::try_from(bytes).unwrap_or(0));
+    (file.read_to_string(&mut text)).map_err(|e| SceneError::unreadable(&name, e))?;
     Ok((text, name))
 }
 

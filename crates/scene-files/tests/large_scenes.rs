@@ -1,7 +1,8 @@
 //! Large scenes load object by object: a generated scene of 20,000 spheres
 //! (many of the loader's batches) loads completely and in order, an
 //! error deep inside it names its own line and object, and a scene larger
-//! than the memory there is is refused before it is parsed.
+//! than the memory there is is refused before it is parsed; a mesh whose
+//! triangles need more than there is, as its OBJ file is read.
 //!
 //! Time and memory are measured by hand (see "Large scenes" in book/appendix/performance.md),
 //! not here: these tests check what can fail on any machine.
@@ -137,4 +138,45 @@ fn a_file_larger_than_the_memory_there_is_is_not_even_read() {
     let e = scene_files::load_within(file.path(), Some(&limit(file_size + 1))).unwrap_err();
     assert!(e.message.contains("20000 objects"), "{e}");
     assert!(scene_files::load_within(file.path(), None).is_ok());
+}
+
+/// Two meshes of 20,000 triangles each, named by one scene in `dir` (so
+/// they take from one budget): the scene's path.
+fn two_meshes(dir: &std::path::Path) -> std::path::PathBuf {
+    let mut obj = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    obj += &"f 1 2 3\n".repeat(20_000);
+    std::fs::write(dir.join("mesh.obj"), obj).unwrap();
+    let mesh = "[[objects]]\ntype = \"mesh\"\npath = \"mesh.obj\"\nmaterial = \"grey\"\n";
+    let mut text = Vec::new();
+    write_sphere_cloud(&mut text, 0).unwrap();
+    let text = format!("{}{mesh}{mesh}", String::from_utf8(text).unwrap());
+    std::fs::write(dir.join("meshes.toml"), text).unwrap();
+    dir.join("meshes.toml")
+}
+
+#[test]
+fn meshes_whose_triangles_need_more_than_the_memory_there_is_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = two_meshes(dir.path());
+    let triangles = 2 * 20_000 * BYTES_PER_OBJECT;
+    let limit = |bytes| MemoryLimit {
+        bytes,
+        source: "the test's limit".into(),
+    };
+    // Room for one mesh's triangles, not for both.
+    let e = scene_files::load_within(&scene, Some(&limit(triangles * 3 / 4))).unwrap_err();
+    println!("{e}");
+    assert!(e.path.ends_with("].path"), "{e}");
+    let mesh = dir.path().join("mesh.obj").display().to_string();
+    assert!(e.message.starts_with(&format!("{mesh}:")), "{e}");
+    for words in [
+        "the mesh is too large for the memory",
+        "of the 156.3 KiB file",
+        "triangles with area",
+        "448 bytes a triangle",
+        "is available (the test's limit)",
+    ] {
+        assert!(e.message.contains(words), "{words:?} not in {e}");
+    }
+    assert!(scene_files::load_within(&scene, Some(&limit(2 * triangles))).is_ok());
 }

@@ -1,5 +1,6 @@
 //! Will the scene fit? The memory a scene needs, estimated from its object
-//! count before any object is parsed, and the memory the machine has.
+//! count before any object is parsed (and from its meshes' triangles as
+//! their OBJ files are read), and the memory the machine has.
 //!
 //! # Bytes per object
 //!
@@ -22,13 +23,22 @@
 //! about 400 bytes per sphere, its 106 bytes of text included (563 MiB
 //! when a vector was 12 bytes, not 16). The estimate below adds a margin.
 
+use std::sync::atomic::{AtomicU64, Ordering};
+
 use super::outline::Outline;
 use crate::SceneError;
 
 /// The peak memory of loading and rendering one object, besides the
 /// file's text (measured about 290, with a margin: see the module's table).
-/// A mesh counts as one object here, however many triangles its OBJ has.
+/// A mesh's table counts as one object before the scene is parsed; each of
+/// its triangles with area counts as one more as its OBJ file is read (a
+/// torus of 2 million smooth triangles, 1 million vertices and normals,
+/// peaked at 689 MB rendered: about 345 bytes a triangle).
 pub const BYTES_PER_OBJECT: u64 = 448;
+
+/// What an OBJ file's vertex or normal takes while its mesh is read: a
+/// vector of 16 bytes, in a list that may have twice the room it uses.
+pub(crate) const BYTES_PER_VERTEX: u64 = 32;
 
 /// Parsed whole (see [`Outline::unusual`]), toml holds spanned values of the
 /// whole file at once: measured 32 bytes of memory per byte of text.
@@ -62,6 +72,40 @@ impl MemoryLimit {
     }
 }
 
+/// What a scene's meshes may take of the memory, as their OBJ files are
+/// read: the limit, less what the rest of the scene was estimated to need.
+/// Meshes in different batches of objects are read in parallel and take
+/// from it together.
+#[derive(Debug)]
+pub(crate) struct MeshBudget {
+    limit: MemoryLimit,
+    /// The scene's estimated need so far.
+    need: AtomicU64,
+}
+
+impl MeshBudget {
+    pub fn new(limit: &MemoryLimit, scene_need: u64) -> MeshBudget {
+        MeshBudget {
+            limit: limit.clone(),
+            need: AtomicU64::new(scene_need),
+        }
+    }
+
+    /// Adds `bytes` to the scene's estimated need; `Err` with the need, once
+    /// it is more than the limit.
+    pub fn take(&self, bytes: u64) -> Result<(), u64> {
+        let need = self.need.fetch_add(bytes, Ordering::Relaxed) + bytes;
+        if need > self.limit.bytes {
+            return Err(need);
+        }
+        Ok(())
+    }
+
+    pub fn limit(&self) -> &MemoryLimit {
+        &self.limit
+    }
+}
+
 /// The memory a scene of `text` with this outline will need, estimated
 /// before parsing its objects.
 pub(super) fn estimate(text: &str, outline: &Outline) -> u64 {
@@ -73,15 +117,17 @@ pub(super) fn estimate(text: &str, outline: &Outline) -> u64 {
     }
 }
 
-/// Refuses a scene whose estimated need is more than `limit` allows.
+/// Refuses a scene whose estimated need is more than `limit` allows;
+/// returns the need.
 pub(super) fn check(
     file: &str,
     text: &str,
     outline: &Outline,
     limit: Option<&MemoryLimit>,
-) -> Result<(), SceneError> {
+) -> Result<u64, SceneError> {
     let objects = format!("{} objects", outline.objects);
-    refuse_beyond(file, text, &objects, estimate(text, outline), limit)
+    let need = estimate(text, outline);
+    refuse_beyond(file, text, &objects, need, limit).map(|()| need)
 }
 
 /// Refuses an NFF scene that would need more than `limit`: its text plus
@@ -154,7 +200,7 @@ pub(crate) fn check_file_size(
 }
 
 /// A number of bytes for people: `1.5 GiB`, `184.0 MiB`, `12 bytes`.
-pub(super) fn size(bytes: u64) -> String {
+pub(crate) fn size(bytes: u64) -> String {
     const UNITS: [(&str, u64); 3] = [("GiB", 1 << 30), ("MiB", 1 << 20), ("KiB", 1 << 10)];
     match UNITS.iter().find(|(_, unit)| bytes >= *unit) {
         Some((name, unit)) => format!("{:.1} {name}", bytes as f64 / *unit as f64),
@@ -223,5 +269,18 @@ mod tests {
         };
         assert!(check("s.toml", &text, &Outline::of(&text), Some(&limit)).is_ok());
         assert!(check("s.toml", &text, &Outline::of(&text), None).is_ok());
+    }
+
+    #[test]
+    fn meshes_take_from_one_budget_until_it_is_spent() {
+        let limit = MemoryLimit {
+            bytes: 1000,
+            source: "a test".into(),
+        };
+        let budget = MeshBudget::new(&limit, 600);
+        assert_eq!(budget.take(300), Ok(()));
+        assert_eq!(budget.take(100), Ok(()));
+        assert_eq!(budget.take(1), Err(1001));
+        assert_eq!(budget.limit().bytes, 1000);
     }
 }

@@ -30,7 +30,7 @@ mod values;
 use serde::Deserialize;
 
 pub use memory::{BYTES_PER_OBJECT, MemoryLimit};
-pub(super) use memory::{check_file_size, check_nff};
+pub(crate) use memory::{BYTES_PER_VERTEX, MeshBudget, check_file_size, check_nff, size};
 pub use sphere_cloud::write_sphere_cloud;
 
 use super::{Scene, SceneError};
@@ -40,23 +40,25 @@ use records::SceneFile;
 use validate::Checker;
 
 /// Parses TOML text into a validated scene, refusing one that would need
-/// more memory than `limit`.
+/// more memory than `limit`: before its objects are parsed, by their count;
+/// then as its meshes are read, by their triangles.
 pub(super) fn parse(
     text: &str,
     file: &str,
     limit: Option<&MemoryLimit>,
 ) -> Result<Scene, SceneError> {
     let outline = Outline::of(text);
-    memory::check(file, text, &outline, limit)?;
+    let need = memory::check(file, text, &outline, limit)?;
+    let budget = limit.map(|limit| MeshBudget::new(limit, need));
     if outline.unusual || outline.batches.is_empty() {
-        return parse_whole(text, file);
+        return parse_whole(text, file, budget.as_ref());
     }
-    parse_in_parts(text, file, &outline)
+    parse_in_parts(text, file, &outline, budget.as_ref())
 }
 
-/// Parses the whole text at once.
-fn parse_whole(text: &str, file: &str) -> Result<Scene, SceneError> {
-    let check = Checker::whole(file, text);
+/// Parses the whole text at once; its meshes take from `budget`.
+fn parse_whole(text: &str, file: &str, budget: Option<&MeshBudget>) -> Result<Scene, SceneError> {
+    let check = Checker::whole(file, text).within(budget);
     let scene: SceneFile = deserialize(text, &check, 0).map_err(|f| f.error)?;
     scene.validate(&check)
 }

@@ -18,7 +18,7 @@ use toml::Spanned;
 use super::outline::{Batch, Outline};
 use super::records::{ObjectFile, SceneFile};
 use super::validate::{Checker, objects_from_records};
-use super::{deserialize, parse_whole};
+use super::{MeshBudget, deserialize, parse_whole};
 use crate::{Object, Scene, SceneError};
 
 /// Which step of reading a file found a mistake, in the order of the steps.
@@ -72,17 +72,18 @@ pub(super) fn parse_in_parts(
     text: &str,
     file: &str,
     outline: &Outline,
+    budget: Option<&MeshBudget>,
 ) -> Result<Scene, SceneError> {
     let head_text: String = outline.head.iter().map(|r| &text[r.clone()]).collect();
     let check = Checker::of_ranges(file, text, &outline.head);
     let head: Result<SceneFile, Failure> = deserialize(&head_text, &check, 0);
     if head.as_ref().is_ok_and(|h| !h.objects.is_empty()) {
-        return parse_whole(text, file); // objects in two ways: let toml say what is wrong
+        return parse_whole(text, file, budget); // objects in two ways: let toml say what is wrong
     }
     let names: Vec<&String> = head
         .as_ref()
         .map_or(vec![], |h| h.materials.keys().collect());
-    let objects = parse_batches(text, file, outline, &names);
+    let objects = parse_batches(text, file, outline, &names, budget);
     let head =
         head.and_then(|h| (h.validate(&check)).map_err(|error| Failure::new(Stage::Rules, error)));
     match (head, objects) {
@@ -103,12 +104,13 @@ fn parse_batches(
     file: &str,
     outline: &Outline,
     names: &[&String],
+    budget: Option<&MeshBudget>,
 ) -> Result<Vec<Object>, Failure> {
     let mut objects = Vec::with_capacity(outline.objects);
     let mut failure: Option<Failure> = None;
     for group in outline.batches.chunks(GROUP) {
         let parsed: Vec<_> = (group.par_iter())
-            .map(|batch| parse_batch(text, file, batch, names))
+            .map(|batch| parse_batch(text, file, batch, names, budget))
             .collect();
         for batch in parsed {
             match batch {
@@ -132,14 +134,16 @@ struct ObjectsFile {
     objects: Vec<Spanned<ObjectFile>>,
 }
 
-/// The objects of one batch, checked against the scene's material names.
+/// The objects of one batch, checked against the scene's material names;
+/// its meshes take from `budget`.
 fn parse_batch(
     text: &str,
     file: &str,
     batch: &Batch,
     names: &[&String],
+    budget: Option<&MeshBudget>,
 ) -> Result<Vec<Object>, Failure> {
-    let check = Checker::from(file, text, batch.span.start);
+    let check = Checker::from(file, text, batch.span.start).within(budget);
     let records: ObjectsFile = deserialize(&text[batch.span.clone()], &check, batch.first)?;
     objects_from_records(&records.objects, batch.first, names, &check)
         .map_err(|error| Failure::new(Stage::Rules, error))

@@ -93,8 +93,8 @@ fn both_ways(text: &str) -> Result<Scene, SceneError> {
     assert!(!outline.unusual);
     // Full batches, one cut short by the light: 0.., BATCH.., BATCH + 101.., ...
     assert_eq!(outline.batches[2].first, outline::BATCH + 101);
-    let whole = parse_whole(text, "big.toml");
-    let in_parts = parse_in_parts(text, "big.toml", &outline);
+    let whole = parse_whole(text, "big.toml", None);
+    let in_parts = parse_in_parts(text, "big.toml", &outline, None);
     assert_eq!(in_parts, whole);
     in_parts
 }
@@ -210,7 +210,7 @@ fn unusual_files_are_parsed_whole() {
     ] {
         assert!(Outline::of(&text).unusual);
         let e = parse(&text, "odd.toml", None).expect_err("objects twice");
-        assert_eq!(e, parse_whole(&text, "odd.toml").unwrap_err());
+        assert_eq!(e, parse_whole(&text, "odd.toml", None).unwrap_err());
     }
 }
 

@@ -6,6 +6,7 @@ use std::ops::Range;
 
 use toml::Spanned;
 
+use super::MeshBudget;
 use super::records::{
     CameraFile, LightFile, LightKind, MaterialFile, ObjectFile, ObjectKind, SceneFile,
 };
@@ -24,6 +25,8 @@ pub(super) struct Checker<'a> {
     /// The pieces the parsed text was put together from: where each starts
     /// in the parsed text and in the file, in order, the first at 0.
     pub pieces: Vec<(usize, usize)>,
+    /// What the meshes may take of the memory (`None`: no limit).
+    pub budget: Option<&'a MeshBudget>,
 }
 
 impl<'a> Checker<'a> {
@@ -35,7 +38,17 @@ impl<'a> Checker<'a> {
     /// For the file's text from `start` on.
     pub fn from(file: &'a str, text: &'a str, start: usize) -> Self {
         let pieces = vec![(0, start)];
-        Checker { file, text, pieces }
+        Checker {
+            file,
+            text,
+            pieces,
+            budget: None,
+        }
+    }
+
+    /// The same checker, its meshes taking from `budget`.
+    pub fn within(self, budget: Option<&'a MeshBudget>) -> Self {
+        Checker { budget, ..self }
     }
 
     /// For the file's `ranges` put together, in order. No ranges at all (a
@@ -53,7 +66,12 @@ impl<'a> Checker<'a> {
         if pieces.is_empty() {
             pieces.push((0, 0));
         }
-        Checker { file, text, pieces }
+        Checker {
+            file,
+            text,
+            pieces,
+            budget: None,
+        }
     }
 
     /// The offset in the file of an offset in the parsed text.
@@ -280,16 +298,23 @@ fn cone(o: &ObjectFile, r: &Record) -> Result<Shape, SceneError> {
 }
 
 /// The triangles of a mesh's OBJ file, found relative to the scene file.
+/// An error in the OBJ file (its file, line and column, what is wrong)
+/// becomes the message of an error at the scene's `path`; so do the
+/// warnings, which are printed.
 fn mesh(o: &ObjectFile, r: &Record) -> Result<Vec<Shape>, SceneError> {
     r.refuse(&o.fields_set(), "mesh", &["path", "material", "shadows"])?;
     let file = r.need(o.path.as_ref(), "path", "mesh")?;
     let scene_dir = std::path::Path::new(r.check.file).parent();
     let obj = scene_dir.map_or_else(|| file.get_ref().into(), |d| d.join(file.get_ref()));
-    crate::mesh::load_obj(&obj).map_err(|message| {
-        let message = format!("{message} ({})", obj.display());
+    let at = |message: String| {
         r.check
             .error(file.span(), format!("{}.path", r.path), message)
-    })
+    };
+    let mesh = crate::obj::load(&obj, r.check.budget).map_err(|e| at(e.headline()))?;
+    for warning in mesh.warnings {
+        eprintln!("warning: {}", at(warning).headline());
+    }
+    Ok(mesh.shapes)
 }
 
 /// The index of the material an object names, or an error listing the known ones.

@@ -289,12 +289,10 @@ fn polygon_corners(
 ) -> Result<Vec<(Vec3, Vec3)>, SceneError> {
     let form = if smooth { "pp count" } else { "p count" };
     let count = reader.numbers(line, 1, form)?[0];
-    if count < 3.0 || count.fract() != 0.0 || count > 1e6 {
-        let message = format!("a polygon has a whole number of corners, 3 or more; found {count}");
-        return Err(reader.error(line, line.column(1), message));
-    }
-    let mut corners = Vec::with_capacity(count as usize);
-    for i in 0..count as usize {
+    let count = polygon::corner_count(count, reader.lines_left())
+        .map_err(|message| reader.error(line, line.column(1), message))?;
+    let mut corners = Vec::with_capacity(count);
+    for i in 0..count {
         let what = format!("corner {} of {count}", i + 1);
         let corner = reader.expect_line(line, &what)?;
         corners.push(polygon_corner(&corner, reader, smooth)?);

@@ -71,6 +71,11 @@ impl<'a> Reader<'a> {
         line
     }
 
+    /// How many lines that say something are still to read.
+    pub fn lines_left(&self) -> usize {
+        self.lines.len().saturating_sub(self.next)
+    }
+
     /// The next line, which `what` needs.
     pub fn expect_line(&mut self, after: &Line, what: &str) -> Result<Line<'a>, SceneError> {
         self.next_line()
