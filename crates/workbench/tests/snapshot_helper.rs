@@ -149,6 +149,14 @@ fn a_picture_that_passes_again_takes_its_old_diff_pictures_away() {
     assert!(actual_path.exists() && diff_path.exists());
     let right = disc(0.0, false, 0.0).to_rgb8();
     assert!(snapshot::check("helper-test", "fixed", &reference, &right).is_ok());
-    assert!(!actual_path.exists(), "{} is left behind", actual_path.display());
-    assert!(!diff_path.exists(), "{} is left behind", diff_path.display());
+    assert!(
+        !actual_path.exists(),
+        "{} is left behind",
+        actual_path.display()
+    );
+    assert!(
+        !diff_path.exists(),
+        "{} is left behind",
+        diff_path.display()
+    );
 }

@@ -5,6 +5,7 @@
 //! by `todo!`, so that its tests fail until the student writes it.
 
 pub mod check;
+pub mod record;
 pub mod take_out;
 
 use std::path::{Path, PathBuf};
@@ -86,6 +87,8 @@ fn write_handout(dir: &Path, solved_through: u32) -> Result<(), String> {
     let written = write_tree(&root, dir, |r| {
         r.chapter().is_none_or(|chapter| chapter > solved_through)
     })?;
+    // Which raybook it was made from, for `workbook grade`.
+    record::Record::of_workspace(&root).write(dir)?;
     println!(
         "wrote {} files of {} to {}",
         written.files,

@@ -322,6 +322,9 @@ mod tests {
         );
         // The row names the same failure as the advice.
         let row = text.lines().nth(1).unwrap();
-        assert!(row.ends_with("  test the_lectures_worked_example"), "{text}");
+        assert!(
+            row.ends_with("  test the_lectures_worked_example"),
+            "{text}"
+        );
     }
 }

@@ -1,0 +1,219 @@
+//! Grading a class: the student folders listed, each checked, graded side
+//! by side (or read from the rerun cache when their files and the
+//! reference are those of the last run), with a progress bar.
+
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use serde::{Deserialize, Serialize};
+
+use super::pool;
+use super::reference::{Reference, Settings};
+use super::result::StudentResult;
+use super::student::grade;
+use super::submission::{check, files, hash_files, ignore_rules};
+
+/// The student folders of `class`, by name: every entry but hidden ones
+/// (`.git`, `.DS_Store`); those that are not folders are refused later,
+/// with a message.
+pub fn list(class: &Path) -> Result<Vec<String>, String> {
+    let entries = std::fs::read_dir(class)
+        .map_err(|e| format!("cannot list the class folder {}: {e}", class.display()))?;
+    let mut names: Vec<String> = entries
+        .filter_map(|e| Some(e.ok()?.file_name().to_string_lossy().into_owned()))
+        .filter(|name| !name.starts_with('.'))
+        .collect();
+    names.sort();
+    Ok(names)
+}
+
+/// A name for each student's files and links: letters, digits, `-` and
+/// `_`, never starting with `_` (the report's own folders do), unique.
+pub fn slugs(names: &[String]) -> Vec<String> {
+    let mut taken: Vec<String> = Vec::new();
+    for name in names {
+        let mut slug: String = name
+            .chars()
+            .map(|c| {
+                if c.is_ascii_alphanumeric() || c == '-' {
+                    c.to_ascii_lowercase()
+                } else {
+                    '_'
+                }
+            })
+            .collect();
+        if slug.is_empty() || slug.starts_with('_') {
+            slug.insert(0, 's');
+        }
+        let base = slug.clone();
+        let mut n = 2;
+        while taken.contains(&slug) {
+            slug = format!("{base}-{n}");
+            n += 1;
+        }
+        taken.push(slug);
+    }
+    taken
+}
+
+/// A student's cached result, with what it was graded from.
+#[derive(Serialize, Deserialize)]
+struct Cached {
+    key: String,
+    result: StudentResult,
+}
+
+/// Grades the students `names` of `class` (`again`: ignoring the cache),
+/// `settings.jobs` side by side; the results, in the order of `names`,
+/// and how many were graded (not read from the cache).
+pub fn grade_class(
+    class: &Path,
+    names: &[String],
+    reference: &Reference,
+    settings: &Settings,
+    (out, again): (&Path, bool),
+) -> (Vec<StudentResult>, usize) {
+    let slugs = slugs(names);
+    let bar = progress_bar(names.len());
+    let mut results: Vec<Option<StudentResult>> = vec![None; names.len()];
+    let mut graded = 0;
+    let items: Vec<usize> = (0..names.len()).collect();
+    let work = |i: usize| {
+        bar.set_message(names[i].clone());
+        let (result, fresh) = one(
+            class,
+            &names[i],
+            &slugs[i],
+            reference,
+            settings,
+            (out, again),
+        );
+        (i, result, fresh)
+    };
+    pool::for_each(items, settings.jobs, work, |(i, result, fresh)| {
+        graded += usize::from(fresh);
+        let verdict = match (&result.refused, fresh) {
+            (Some(reason), _) => format!("{}: not graded: {reason}", result.name),
+            (None, true) => format!("{}: graded in {:.0} s", result.name, result.seconds),
+            (None, false) => format!("{}: unchanged since the last run", result.name),
+        };
+        // A hidden bar (output not a terminal) prints nothing: say it anyway.
+        if bar.is_hidden() {
+            eprintln!("{verdict}");
+        } else {
+            bar.println(verdict);
+        }
+        results[i] = Some(result);
+        bar.inc(1);
+    });
+    bar.finish_and_clear();
+    (results.into_iter().flatten().collect(), graded)
+}
+
+/// The progress bar: students done, of how many, time left.
+fn progress_bar(count: usize) -> ProgressBar {
+    let bar = ProgressBar::new(count as u64);
+    let style = ProgressStyle::with_template(
+        "[{elapsed_precise}] {wide_bar} {pos}/{len} students, about {eta} left ({msg})",
+    );
+    if let Ok(style) = style {
+        bar.set_style(style);
+    }
+    bar.enable_steady_tick(Duration::from_secs(1));
+    bar
+}
+
+/// One student: checked, then read from the cache or graded (and cached).
+/// True if it was graded now.
+fn one(
+    class: &Path,
+    name: &str,
+    slug: &str,
+    reference: &Reference,
+    settings: &Settings,
+    (out, again): (&Path, bool),
+) -> (StudentResult, bool) {
+    let refused = |reason: String| StudentResult {
+        name: name.to_owned(),
+        slug: slug.to_owned(),
+        refused: Some(reason),
+        ..StudentResult::default()
+    };
+    let submission = match check(class, name, &reference.record) {
+        Ok(submission) => submission,
+        Err(reason) => return (refused(reason), false),
+    };
+    let listed = files(&submission.dir, &ignore_rules(&reference.base.copy));
+    let hash = listed.and_then(|l| hash_files(&submission.dir, &l));
+    let hash = match hash {
+        Ok(hash) => hash,
+        Err(reason) => return (refused(reason), false),
+    };
+    let key = format!(
+        "{} {hash} {} {}",
+        super::CACHE_FORMAT,
+        reference.hash,
+        settings_key(settings)
+    );
+    let cache = cache_path(out, slug);
+    if !again && let Some(result) = cached(&cache, &key, name) {
+        return (result, false);
+    }
+    let work = out.join(".cache/work");
+    let pictures = out.join("report").join(slug);
+    let result = grade(&submission, slug, reference, settings, (&work, &pictures));
+    // Not graded here means grading itself failed (a file it could not
+    // copy): the next run tries again.
+    if result.refused.is_none() {
+        store(&cache, key, &result);
+    }
+    (result, true)
+}
+
+/// What in the settings changes a result.
+fn settings_key(settings: &Settings) -> String {
+    let chapters: Vec<&str> = settings
+        .chapters
+        .iter()
+        .map(|c| c.folder.as_str())
+        .collect();
+    format!("{chapters:?} {:?} {:?}", settings.build, settings.test)
+}
+
+/// Where a student's result is cached.
+fn cache_path(out: &Path, slug: &str) -> PathBuf {
+    out.join(".cache/students").join(format!("{slug}.json"))
+}
+
+/// The cached result, if it was made from `key` for this student.
+fn cached(path: &Path, key: &str, name: &str) -> Option<StudentResult> {
+    let text = std::fs::read_to_string(path).ok()?;
+    let cached: Cached = serde_json::from_str(&text).ok()?;
+    (cached.key == key && cached.result.name == name).then_some(cached.result)
+}
+
+/// Caches a result (best effort: a failure only means grading again).
+fn store(path: &Path, key: String, result: &StudentResult) {
+    let cached = Cached {
+        key,
+        result: result.clone(),
+    };
+    if let Ok(json) = serde_json::to_vec(&cached) {
+        let _ = crate::toolkit::image::write_atomically(path, &json);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slugs_are_safe_and_unique() {
+        let names = ["Ada Lovelace", "ada_lovelace", "_x", "=cmd", "ok-1"].map(String::from);
+        assert_eq!(
+            slugs(&names),
+            ["ada_lovelace", "ada_lovelace-2", "s_x", "s_cmd", "ok-1"]
+        );
+    }
+}

@@ -1,0 +1,342 @@
+//! `workbook grade`: a teacher grades a class, every student's handout in
+//! one run, or one submission as Gradescope's autograder runs it.
+//!
+//! For each student, each chapter's tests passed and failed, each exercise
+//! passed or not (it passes when every test that fails without its solution
+//! passes: see `mapping.rs`), the first failing test's message, the time
+//! taken, whether it compiled. Outputs (`report/`): a CSV gradebook, a
+//! Gradescope `results.json` per student, JUnit XML, an HTML class report.
+//!
+//! Student code is untrusted. What grading does about it:
+//! * it runs in a fresh copy, never in the student's folder, which is only
+//!   read (`submission.rs`, `student.rs`), and symlinks are never followed;
+//! * the copy holds the reference's files but for the student's own
+//!   folders (each exercise chapter's `src/`): the tests, pictures,
+//!   manifest, Cargo files and lock file are the reference's, and no build
+//!   script of the student's is there; edits to them are flagged;
+//! * cargo runs `--offline`, with a small environment (HOME and TMPDIR in
+//!   the copy);
+//! * confined where the system allows it (`confine.rs`: Linux namespaces,
+//!   which user namespaces let an unprivileged teacher make): no network,
+//!   every file system read-only but the student's copy, a `/dev/shm` of
+//!   its own, no capabilities;
+//! * each build and each chapter's tests run in a process group of their
+//!   own, killed whole at the time limit, under limits on address space,
+//!   file size and core dumps, with a cap on what they print
+//!   (`sandbox.rs`); what stopped a run is recorded and the next one
+//!   starts; Ctrl-C ends them too;
+//! * each student builds in a target folder of their own, which shares
+//!   only what no student can change (`share.rs`).
+//!
+//! What it does not contain: the tests run as the teacher's own user. They
+//! can read any file the teacher can (`include_str!("/home/…")` even at
+//! compile time), though with no network to send it anywhere; they share
+//! the machine's CPU time and processes (no cgroup: a fork bomb is limited
+//! only by the time limit); a process that leaves the group (`setsid`)
+//! outlives the time limit; the registry dependencies hard-linked into a
+//! student's target folder are the shared build's own files, which a test
+//! could overwrite in place. Without namespaces (another OS, or a system
+//! that forbids them), a test can also write anywhere the teacher can. For
+//! a class one does not trust, run `workbook grade` itself inside a
+//! container or a throwaway account, as Gradescope does.
+
+mod cargo;
+mod class;
+mod confine;
+mod mapping;
+mod outcomes;
+mod points;
+mod pool;
+mod reference;
+mod report;
+mod result;
+mod sandbox;
+mod share;
+mod student;
+mod submission;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use crate::workbench::chapters::{self, ChapterEntry};
+use crate::workspace::current_workspace;
+use reference::{Reference, Settings};
+use sandbox::Limits;
+
+pub use result::{ChapterRun, StudentResult, Verdict};
+
+/// The version of what grading caches (the tests of each exercise, each
+/// student's result): a new one when what they mean changes, so that a
+/// cache of an older workbook is never read as this one's.
+const CACHE_FORMAT: &str = "grade-cache-1";
+
+/// `workbook grade`: grades a class of handouts against the reference.
+#[derive(clap::Args, Debug, Clone)]
+pub struct GradeArgs {
+    /// The class: a folder with one subfolder per student, each a handout
+    /// (a plain folder or a git checkout).
+    #[arg(required_unless_present = "one", conflicts_with = "one")]
+    pub students: Option<PathBuf>,
+
+    /// Grade one submission (a handout folder) instead of a class, as
+    /// Gradescope's autograder runs it.
+    #[arg(long, value_name = "DIR")]
+    pub one: Option<PathBuf>,
+
+    /// With --one: write Gradescope's results.json here.
+    #[arg(long, value_name = "FILE", requires = "one")]
+    pub gradescope: Option<PathBuf>,
+
+    /// The reference workspace (default: the one this runs in).
+    #[arg(long, value_name = "DIR")]
+    pub reference: Option<PathBuf>,
+
+    /// Where to write the outputs and keep the cache (default:
+    /// target/grade in the reference).
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+
+    /// The chapters to grade: `1-3`, `1,2,5` (default: every chapter with
+    /// exercises).
+    #[arg(long, value_name = "LIST")]
+    pub chapters: Option<String>,
+
+    /// Seconds a chapter's tests may run before they are killed.
+    #[arg(long, default_value_t = 60, value_name = "SECONDS")]
+    pub timeout: u64,
+
+    /// Seconds a chapter's build may take before it is killed.
+    #[arg(long, default_value_t = 900, value_name = "SECONDS")]
+    pub build_timeout: u64,
+
+    /// Address space per process of a build or test run, in MiB.
+    #[arg(long, default_value_t = 4096, value_name = "MIB")]
+    pub memory: u64,
+
+    /// What a build or test run may print, in MiB, before it is killed.
+    #[arg(long, default_value_t = 16, value_name = "MIB")]
+    pub output: u64,
+
+    /// Students graded side by side (default: the number of cores).
+    #[arg(long, value_name = "N")]
+    pub jobs: Option<usize>,
+
+    /// The points per exercise, a TOML file (default: points.toml in the
+    /// output folder, written with one point each on the first run).
+    #[arg(long, value_name = "FILE")]
+    pub points: Option<PathBuf>,
+
+    /// Grade every student again, even those whose files have not changed
+    /// since the last run.
+    #[arg(long)]
+    pub again: bool,
+}
+
+/// Runs `workbook grade`.
+pub fn main(args: &GradeArgs) -> ExitCode {
+    match grade(args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Prepares the reference, grades the students, writes the outputs.
+fn grade(args: &GradeArgs) -> Result<(), String> {
+    let root = match &args.reference {
+        Some(dir) => dir
+            .canonicalize()
+            .map_err(|e| format!("{}: {e}", dir.display()))?,
+        None => current_workspace()?,
+    };
+    let out = args
+        .out
+        .clone()
+        .unwrap_or_else(|| root.join("target/grade"));
+    std::fs::create_dir_all(&out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let out = out.canonicalize().map_err(|e| e.to_string())?;
+    let (class, names) = students(args)?;
+    let settings = settings(args, &out, &class)?;
+    match confine::confinement() {
+        confine::Confinement::Full => {}
+        confine::Confinement::Network => eprintln!(
+            "note: the students' runs are offline, but may write outside their copies \
+             (no mount namespace here: see `unshare`, `setpriv`)"
+        ),
+        confine::Confinement::None => eprintln!(
+            "note: no namespaces here (unshare): the students' tests can reach the network \
+             and write outside their copies; cargo itself runs --offline"
+        ),
+    }
+    let start = Instant::now();
+    let reference = Reference::prepare(&root, &settings, &|line| eprintln!("{line}"))?;
+    let prepared = start.elapsed();
+    let start = Instant::now();
+    let (results, graded) =
+        class::grade_class(&class, &names, &reference, &settings, (&out, args.again));
+    let took = start.elapsed();
+    let ids: Vec<_> = reference.tests.exercises.clone();
+    let points = points::Points::load(args.points.as_deref(), &out, &ids)?;
+    let class_outputs = report::Class {
+        reference: &reference,
+        points: &points,
+        students: &results,
+    };
+    let written = report::write_all(&out, &class_outputs)?;
+    if let (Some(path), Some(student)) = (&args.gradescope, results.first()) {
+        report::write(path, report::results_json(&class_outputs, student))?;
+    }
+    print_summary(
+        &class_outputs,
+        &written,
+        (prepared, took, graded, settings.jobs),
+    );
+    Ok(())
+}
+
+/// The class folder and the student folders' names in it (for --one, the
+/// submission's parent and its name).
+fn students(args: &GradeArgs) -> Result<(PathBuf, Vec<String>), String> {
+    if let Some(one) = &args.one {
+        let absolute = std::path::absolute(one).map_err(|e| format!("{}: {e}", one.display()))?;
+        let name = absolute
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned());
+        let parent = absolute.parent().map(Path::to_owned);
+        let (Some(name), Some(parent)) = (name, parent) else {
+            return Err(format!("{}: not a folder to grade", one.display()));
+        };
+        return Ok((parent, vec![name]));
+    }
+    let class = args
+        .students
+        .as_ref()
+        .expect("clap requires STUDENTS or --one");
+    let class = class
+        .canonicalize()
+        .map_err(|e| format!("the class folder {}: {e}", class.display()))?;
+    let names = class::list(&class)?;
+    Ok((class, names))
+}
+
+/// The settings the arguments give.
+fn settings(args: &GradeArgs, out: &Path, class: &Path) -> Result<Settings, String> {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let jobs = args.jobs.unwrap_or(cores).max(1);
+    let limits = |seconds| Limits {
+        time: Duration::from_secs(seconds),
+        memory: args.memory << 20,
+        output: (args.output as usize) << 20,
+    };
+    Ok(Settings {
+        chapters: chosen_chapters(args.chapters.as_deref())?,
+        build: limits(args.build_timeout),
+        test: limits(args.timeout),
+        cargo_jobs: (cores / jobs).max(1),
+        jobs,
+        cache: out.join(".cache"),
+        exclude: vec![out.to_owned(), class.to_owned()],
+    })
+}
+
+/// The chapters with exercises whose numbers `list` names (`1-3`, `1,2,5`);
+/// all of them without a list.
+pub fn chosen_chapters(list: Option<&str>) -> Result<Vec<&'static ChapterEntry>, String> {
+    let graded: Vec<&'static ChapterEntry> =
+        chapters::all().iter().filter(|c| c.exercises).collect();
+    let Some(list) = list else {
+        return Ok(graded);
+    };
+    let mut numbers = Vec::new();
+    for part in list.split(',').map(str::trim) {
+        let number = |s: &str| {
+            s.trim()
+                .parse::<u32>()
+                .map_err(|_| format!("--chapters {list}: {s:?} is not a chapter number"))
+        };
+        match part.split_once('-') {
+            Some((from, to)) => numbers.extend(number(from)?..=number(to)?),
+            None => numbers.push(number(part)?),
+        }
+    }
+    let chosen: Vec<_> = (graded.iter().copied())
+        .filter(|c| numbers.contains(&c.number()))
+        .collect();
+    match numbers
+        .iter()
+        .find(|n| !chosen.iter().any(|c| c.number() == **n))
+    {
+        Some(n) => Err(format!(
+            "--chapters {list}: chapter {n} has no exercises to grade"
+        )),
+        None => Ok(chosen),
+    }
+}
+
+/// The class in a few lines, and where the outputs are.
+fn print_summary(
+    class: &report::Class,
+    written: &[PathBuf],
+    (prepared, took, graded, jobs): (Duration, Duration, usize, usize),
+) {
+    println!(
+        "{:<24} {:>9}  {:<8}  {:<5}  {:>6}",
+        "student", "score", "compiled", "flags", "time"
+    );
+    for student in class.students {
+        let (score, max) = class.score(student);
+        let score = format!("{}/{}", report::points(score), report::points(max));
+        let compiled = match (&student.refused, student.compiled()) {
+            (Some(_), _) => "-",
+            (None, true) => "yes",
+            (None, false) => "no",
+        };
+        let time = format!("{:.0} s", student.seconds);
+        let flags = student.flags.len();
+        println!(
+            "{:<24} {score:>9}  {compiled:<8}  {flags:<5}  {time:>6}",
+            student.name
+        );
+    }
+    let refused = class
+        .students
+        .iter()
+        .filter(|s| s.refused.is_some())
+        .count();
+    let unchanged = class.students.len() - graded - refused;
+    println!(
+        "\nreference prepared in {:.0} s; students: {graded} graded in {:.0} s ({jobs} side \
+         by side), {unchanged} unchanged since the last run, {refused} not graded",
+        prepared.as_secs_f64(),
+        took.as_secs_f64()
+    );
+    println!("reference: raybook {}", class.label());
+    for path in written {
+        println!("wrote {}", path.display());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn chapters_are_chosen_by_ranges_and_lists() {
+        let folders = |list| {
+            let chosen = chosen_chapters(Some(list)).unwrap();
+            chosen.iter().map(|c| c.number()).collect::<Vec<_>>()
+        };
+        assert_eq!(folders("1-3"), [1, 2, 3]);
+        assert_eq!(folders("1, 5,2"), [1, 2, 5]);
+        assert!(
+            chosen_chapters(Some("8"))
+                .unwrap_err()
+                .contains("no exercises")
+        );
+        assert!(chosen_chapters(Some("x")).is_err());
+        assert!(chosen_chapters(None).unwrap().len() >= 7);
+    }
+}

@@ -1,0 +1,69 @@
+//! A student's grading in the `results.json` schema of Gradescope's
+//! autograders: the total score, the time taken, a text for the whole
+//! submission, and one test per exercise with its name, score, max_score,
+//! status and output.
+
+use serde_json::{Value, json};
+
+use super::Class;
+use crate::grade::result::StudentResult;
+
+/// The `results.json` text of `student`.
+pub fn results_json(class: &Class, student: &StudentResult) -> String {
+    let (score, _) = class.score(student);
+    let mut tests = Vec::new();
+    if student.refused.is_none() {
+        for (index, exercise) in class.reference.tests.exercises.iter().enumerate() {
+            let verdict = student.verdict(&exercise.id);
+            let passed = verdict.is_some_and(|v| v.passed);
+            let max = class.points.of(&exercise.id);
+            let output = match verdict.and_then(|v| v.message.clone()) {
+                Some(message) => message,
+                None if passed => match exercise.tests.len() {
+                    1 => "passes the test that grades it".to_owned(),
+                    n => format!("passes the {n} tests that grade it"),
+                },
+                None => "not graded".to_owned(),
+            };
+            tests.push(json!({
+                "name": format!("{}: {}", exercise.id, exercise.hint),
+                "number": format!("{}", index + 1),
+                "score": if passed { max } else { 0.0 },
+                "max_score": max,
+                "status": if passed { "passed" } else { "failed" },
+                "output": output,
+                "visibility": "visible",
+            }));
+        }
+    }
+    let results = json!({
+        "score": score,
+        "execution_time": student.seconds.round() as u64,
+        "output": summary(class, student),
+        "stdout_visibility": "hidden",
+        "tests": Value::Array(tests),
+    });
+    serde_json::to_string_pretty(&results).expect("JSON values serialize") + "\n"
+}
+
+/// The text for the whole submission: the reference, and whatever the
+/// student should know (not graded, flags, troubles, warnings).
+fn summary(class: &Class, student: &StudentResult) -> String {
+    let mut lines = vec![format!("Graded against raybook {}.", class.label())];
+    if let Some(reason) = &student.refused {
+        lines.push(format!("Not graded: {reason}"));
+    }
+    for trouble in student.troubles() {
+        lines.push(format!("Chapter {trouble}"));
+    }
+    if !student.flags.is_empty() {
+        lines.push(
+            "You changed files that grading takes from the reference (graded on the \
+             reference's):"
+                .to_owned(),
+        );
+        lines.extend(student.flags.iter().map(|f| format!("  {f}")));
+    }
+    lines.extend(student.warnings.iter().cloned());
+    lines.join("\n")
+}

@@ -1,0 +1,76 @@
+//! The outputs of a grading run, each written atomically (to a temporary
+//! file beside it, then renamed into place), each naming the reference's
+//! version and commit: the CSV gradebook, a Gradescope `results.json` per
+//! student, JUnit XML for the class, and the HTML class report.
+
+mod csv;
+mod gradescope;
+mod html;
+mod junit;
+
+use std::path::{Path, PathBuf};
+
+use super::points::Points;
+use super::reference::Reference;
+use super::result::StudentResult;
+
+pub use gradescope::results_json;
+
+/// What every output needs: the reference, the points, the results.
+pub struct Class<'a> {
+    pub reference: &'a Reference,
+    pub points: &'a Points,
+    pub students: &'a [StudentResult],
+}
+
+impl Class<'_> {
+    /// The reference's version and commit, as every output names it.
+    pub fn label(&self) -> String {
+        self.reference.record.label()
+    }
+
+    /// A student's score and the most they could score.
+    pub fn score(&self, student: &StudentResult) -> (f64, f64) {
+        let exercises = &self.reference.tests.exercises;
+        let max: f64 = exercises.iter().map(|e| self.points.of(&e.id)).sum();
+        let score: f64 = (exercises.iter())
+            .filter(|e| student.verdict(&e.id).is_some_and(|v| v.passed))
+            .map(|e| self.points.of(&e.id))
+            .sum();
+        // A sum of no f64 is -0.0: shown as 0.
+        (score + 0.0, max + 0.0)
+    }
+}
+
+/// Writes every output into `out`; the paths written.
+pub fn write_all(out: &Path, class: &Class) -> Result<Vec<PathBuf>, String> {
+    let mut written = vec![
+        write(&out.join("grades.csv"), csv::gradebook(class))?,
+        write(&out.join("junit.xml"), junit::junit(class))?,
+    ];
+    for student in class.students {
+        let path = out
+            .join("gradescope")
+            .join(format!("{}.json", student.slug));
+        write(&path, results_json(class, student))?;
+    }
+    written.push(out.join("gradescope/"));
+    written.push(html::write_report(&out.join("report"), class)?);
+    Ok(written)
+}
+
+/// Writes `text` to `path` atomically; the path.
+pub fn write(path: &Path, text: String) -> Result<PathBuf, String> {
+    crate::toolkit::image::write_atomically(path, text.as_bytes())
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(path.to_owned())
+}
+
+/// Points as a teacher writes them: `2`, `1.5`.
+pub fn points(value: f64) -> String {
+    if value.fract() == 0.0 {
+        format!("{value:.0}")
+    } else {
+        format!("{value}")
+    }
+}

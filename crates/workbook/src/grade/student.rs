@@ -1,0 +1,314 @@
+//! Grading one student: their code in a fresh copy of the reference, each
+//! chapter built and tested there under the limits, each exercise judged by
+//! the tests that grade it.
+//!
+//! The copy is the reference's base copy with the student's own folders
+//! (each exercise chapter's `src/`) in place of the reference's: so their
+//! tests, pictures, manifest, Cargo files and lock file are the
+//! reference's, and no build script of theirs is there to run. Their
+//! folder is only read.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use super::cargo::{Place, cargo_test};
+use super::outcomes::{Outcomes, name_of, outcomes};
+use super::reference::{Reference, Settings};
+use super::result::{ChapterRun, Picture, StudentResult, Verdict};
+use super::sandbox::{Limits, Ran, run};
+use super::share::copy_keeping_time;
+use super::submission::{Entry, Submission, changes, files, ignore_rules};
+use crate::progress::{TestOutput, parse};
+use crate::workbench::chapters::ChapterEntry;
+
+/// Grades `submission` in a copy under `work`, and copies the pictures of
+/// its failures into `pictures` (the report's folder for this student).
+pub fn grade(
+    submission: &Submission,
+    slug: &str,
+    reference: &Reference,
+    settings: &Settings,
+    (work, pictures): (&Path, &Path),
+) -> StudentResult {
+    let start = Instant::now();
+    let mut result = StudentResult {
+        name: submission.name.clone(),
+        slug: slug.to_owned(),
+        warnings: submission.warnings.clone(),
+        ..StudentResult::default()
+    };
+    let copy = work.join(slug);
+    if let Err(e) = grade_in(
+        submission,
+        reference,
+        settings,
+        &copy,
+        pictures,
+        &mut result,
+    ) {
+        result.refused = Some(e);
+    }
+    let _ = std::fs::remove_dir_all(&copy);
+    result.seconds = start.elapsed().as_secs_f64();
+    result
+}
+
+/// [`grade`], in the copy at `copy`.
+fn grade_in(
+    submission: &Submission,
+    reference: &Reference,
+    settings: &Settings,
+    copy: &Path,
+    pictures: &Path,
+    result: &mut StudentResult,
+) -> Result<(), String> {
+    let listed = files(&submission.dir, &ignore_rules(&reference.base.copy))?;
+    let changed = changes(&submission.dir, &listed, reference)?;
+    (result.flags, result.notes) = (changed.flags, changed.notes);
+    let theirs: Vec<&PathBuf> = (listed.iter())
+        .filter(|(path, entry)| **entry == Entry::File && reference.is_students(path))
+        .map(|(path, _)| path)
+        .collect();
+    let place = write_copy(reference, &submission.dir, &theirs, copy)?;
+    reference
+        .shared
+        .link(&reference.base.target, &place.target)?;
+    let _ = std::fs::remove_dir_all(pictures);
+    for chapter in &settings.chapters {
+        let (mut chapter_run, found) = run_chapter(&place, chapter, settings)?;
+        for exercise in reference.exercises_of(&chapter.folder) {
+            result.exercises.push(judge(exercise, &chapter_run, &found));
+        }
+        if chapter_run.compiled {
+            let all = reference.tests.chapters.get(&chapter.folder);
+            let missing = all.map(|t| t.iter().filter(|t| !found.0.contains_key(*t)).count());
+            chapter_run.unfinished = missing.unwrap_or(0);
+        }
+        chapter_run.pictures = keep_pictures(&place, chapter, pictures)?;
+        result.chapters.push(chapter_run);
+    }
+    Ok(())
+}
+
+/// The reference's base copy at `copy`, with the student's own files
+/// (`theirs`, relative to `dir`) in place of the reference's students'
+/// folders. Symlinks are never copied; the copy is made fresh.
+fn write_copy(
+    reference: &Reference,
+    dir: &Path,
+    theirs: &[&PathBuf],
+    copy: &Path,
+) -> Result<Place, String> {
+    if copy.exists() {
+        std::fs::remove_dir_all(copy)
+            .map_err(|e| format!("cannot clear {}: {e}", copy.display()))?;
+    }
+    // The reference's files keep the base copy's modification times, so
+    // that cargo finds the shared crates built from them fresh (see
+    // share.rs); the student's are new files, newer than any build.
+    let copy_one = |from: &Path, to: &Path, keep_time: bool| {
+        if let Some(parent) = to.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| e.to_string())?;
+        }
+        let copied = match keep_time {
+            true => copy_keeping_time(from, to),
+            false => std::fs::copy(from, to).map(|_| ()),
+        };
+        copied.map_err(|e| format!("cannot copy {}: {e}", from.display()))
+    };
+    for path in reference.files() {
+        if !reference.is_students(path) {
+            copy_one(&reference.base.copy.join(path), &copy.join(path), true)?;
+        }
+    }
+    for path in theirs {
+        copy_one(&dir.join(path), &copy.join(path), false)?;
+    }
+    let copy = copy.canonicalize().map_err(|e| e.to_string())?;
+    Ok(Place::of(&copy))
+}
+
+/// What one chapter's test run printed, read two ways.
+pub struct Found(pub Outcomes, pub TestOutput);
+
+/// Builds the chapter's tests (under the build limits), then runs them
+/// (under the test limits).
+fn run_chapter(
+    place: &Place,
+    chapter: &ChapterEntry,
+    settings: &Settings,
+) -> Result<(ChapterRun, Found), String> {
+    let package = chapter.package();
+    let mut done = ChapterRun {
+        folder: chapter.folder.clone(),
+        ..ChapterRun::default()
+    };
+    let build = cargo_test(place, &package, true, settings.cargo_jobs);
+    let built = run(build, &settings.build)?;
+    done.build_seconds = built.seconds;
+    if !built.success {
+        done.trouble = trouble(&built, &settings.build, "the build");
+        if done.trouble.is_none() {
+            done.compile_error = Some(compile_error(&built.text));
+        }
+        return Ok((done, Found(Outcomes::new(), TestOutput::default())));
+    }
+    done.compiled = true;
+    let tested = run(
+        cargo_test(place, &package, false, settings.cargo_jobs),
+        &settings.test,
+    )?;
+    done.test_seconds = tested.seconds;
+    done.trouble = trouble(&tested, &settings.test, "the tests");
+    let parsed = parse(&tested.text);
+    (done.passed, done.failed) = (parsed.passed, parsed.failed);
+    Ok((done, Found(outcomes(&tested.text, "unknown"), parsed)))
+}
+
+/// The first compile error of a failed build, or cargo's last error line.
+fn compile_error(text: &str) -> String {
+    let parsed = parse(text);
+    parsed.compile_error.unwrap_or_else(|| {
+        let last = text.lines().rev().find(|l| l.starts_with("error"));
+        last.unwrap_or("the build failed").to_owned()
+    })
+}
+
+/// What stopped a run, if anything did: the time limit, the output cap, a
+/// stack overflow, the memory limit, a signal.
+fn trouble(ran: &Ran, limits: &Limits, what: &str) -> Option<String> {
+    let mib = |bytes: u64| bytes >> 20;
+    if ran.timed_out {
+        Some(format!(
+            "{what} timed out after {} s (an endless loop?): killed",
+            limits.time.as_secs()
+        ))
+    } else if ran.output_capped {
+        Some(format!(
+            "{what} printed more than {} MiB: killed",
+            mib(limits.output as u64)
+        ))
+    } else if ran.text.contains("has overflowed its stack") {
+        Some(format!(
+            "{what} crashed: a stack overflow (endless recursion?)"
+        ))
+    } else if ran.text.contains("memory allocation of") {
+        Some(format!(
+            "{what} ran out of memory (limit {} MiB per process)",
+            mib(limits.memory)
+        ))
+    } else {
+        let signal = ran.text.lines().find(|l| l.contains("(signal: "))?;
+        let signal = signal.split("(signal: ").nth(1)?.trim_end_matches(')');
+        Some(format!("{what} crashed (signal {signal})"))
+    }
+}
+
+/// An exercise's verdict: it passes when every test that grades it passed.
+/// Otherwise, the first failing test (in the chapter's order) and its
+/// message, as progress shows it.
+fn judge(exercise: &super::mapping::ExerciseTests, run: &ChapterRun, found: &Found) -> Verdict {
+    let Found(outcomes, parsed) = found;
+    let mut verdict = Verdict {
+        id: exercise.id.clone(),
+        chapter: exercise.chapter.clone(),
+        ..Verdict::default()
+    };
+    if let Some(error) = &run.compile_error {
+        verdict.message = Some(format!("does not compile: {error}"));
+        return verdict;
+    }
+    let first = (exercise.tests.iter()).find(|t| outcomes.get(*t) != Some(&true));
+    let Some(test) = first else {
+        verdict.passed = true;
+        return verdict;
+    };
+    let name = name_of(test);
+    let panic = (parsed.panics.iter()).find(|(t, _)| t == name);
+    verdict.message = Some(match (outcomes.get(test), panic) {
+        (_, Some((_, message))) => format!("test {name}: {message}"),
+        (Some(_), None) => format!("test {name} failed"),
+        (None, None) => match &run.trouble {
+            Some(trouble) => format!("test {name} did not finish: {trouble}"),
+            None => format!("test {name} did not run"),
+        },
+    });
+    verdict
+}
+
+/// Copies the chapter's failure pictures (the three-panel diffs the
+/// snapshot checks write into the copy's target/snapshot-failures/) into
+/// `pictures/<folder>/`; the list of them, relative to the report folder
+/// (`pictures`' parent).
+fn keep_pictures(
+    place: &Place,
+    chapter: &ChapterEntry,
+    pictures: &Path,
+) -> Result<Vec<Picture>, String> {
+    let failures = place
+        .copy
+        .join("target/snapshot-failures")
+        .join(&chapter.folder);
+    let Ok(entries) = std::fs::read_dir(&failures) else {
+        return Ok(Vec::new());
+    };
+    let mut names: Vec<String> = entries
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter_map(|n| n.strip_suffix(".diff.png").map(str::to_owned))
+        .collect();
+    names.sort();
+    let slug = pictures.file_name().unwrap_or_default().to_string_lossy();
+    let mut kept = Vec::new();
+    for name in names {
+        let to = pictures
+            .join(&chapter.folder)
+            .join(format!("{name}.diff.png"));
+        std::fs::create_dir_all(to.parent().expect("a folder")).map_err(|e| e.to_string())?;
+        std::fs::copy(failures.join(format!("{name}.diff.png")), &to)
+            .map_err(|e| format!("cannot keep {}: {e}", to.display()))?;
+        let diff = format!("{slug}/{}/{name}.diff.png", chapter.folder);
+        kept.push(Picture {
+            name,
+            diff: Some(diff),
+        });
+    }
+    Ok(kept)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    #[test]
+    fn what_stopped_a_run_is_named() {
+        let limits = Limits {
+            time: Duration::from_secs(60),
+            memory: 4 << 30,
+            output: 16 << 20,
+        };
+        let said = |ran: Ran| trouble(&ran, &limits, "the tests").unwrap_or_default();
+        let printed = |text: &str| Ran {
+            text: text.to_owned(),
+            ..Ran::default()
+        };
+        let timed_out = Ran {
+            timed_out: true,
+            ..Ran::default()
+        };
+        assert!(said(timed_out).contains("timed out after 60 s"));
+        let flood = Ran {
+            output_capped: true,
+            ..Ran::default()
+        };
+        assert!(said(flood).contains("printed more than 16 MiB"));
+        let overflow =
+            "\nthread 'deep' has overflowed its stack\nfatal runtime error: stack overflow";
+        assert!(said(printed(overflow)).contains("a stack overflow"));
+        let memory = "memory allocation of 1099511627776 bytes failed\n";
+        assert!(said(printed(memory)).contains("ran out of memory (limit 4096 MiB"));
+        let signal = "  process didn't exit successfully: `x` (signal: 11, SIGSEGV: invalid memory reference)";
+        assert!(said(printed(signal)).contains("crashed (signal 11, SIGSEGV"));
+        assert_eq!(said(printed("test result: ok. 3 passed")), "");
+    }
+}
