@@ -19,7 +19,7 @@
 //! The rules themselves (image sizes, the camera, triangles with area) are
 //! shared with the NFF reader in `scene/rules.rs`.
 
-mod memory;
+pub(crate) mod memory;
 mod outline;
 mod parts;
 mod records;
@@ -30,7 +30,7 @@ mod values;
 use serde::Deserialize;
 
 pub use memory::{BYTES_PER_OBJECT, MemoryLimit};
-pub(crate) use memory::{BYTES_PER_VERTEX, MeshBudget, check_file_size, check_nff, size};
+pub(crate) use memory::{MeshBudget, check_file_size, check_nff};
 pub use sphere_cloud::write_sphere_cloud;
 
 use super::{Scene, SceneError};

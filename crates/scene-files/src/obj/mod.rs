@@ -34,7 +34,7 @@ mod reader;
 use std::io::{BufRead, BufReader};
 use std::path::Path;
 
-use crate::file::{BYTES_PER_VERTEX, MeshBudget, size};
+use crate::file::memory::{BYTES_PER_VERTEX, MeshBudget, size};
 use crate::{BYTES_PER_OBJECT, MemoryLimit, SceneError, Shape};
 use reader::Reader;
 

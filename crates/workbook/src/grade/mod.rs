@@ -43,6 +43,7 @@
 mod cargo;
 mod class;
 mod confine;
+mod digest;
 mod mapping;
 mod outcomes;
 mod points;

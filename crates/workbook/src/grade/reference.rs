@@ -9,10 +9,10 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use super::cargo::{Place, TestBinary, cargo_test, test_binaries};
+use super::digest::Digest;
 use super::mapping::{ExerciseTests, Tests, exercise_tests};
 use super::sandbox::{Limits, run};
 use super::share::Shared;
-use super::submission::Digest;
 use crate::handout::record::Record;
 use crate::workbench::chapters::{self, ChapterEntry};
 use crate::workspace::{teacher_only, workspace_files, workspace_regions};
