@@ -103,25 +103,8 @@ impl LightMap {
                 _ => return Err(format!("unknown line {line:?}")),
             }
         }
-        if map.pixels.len() != (map.width * map.height) as usize {
-            return Err(format!(
-                "{} pixels for a size of {}×{}",
-                map.pixels.len(),
-                map.width,
-                map.height
-            ));
-        }
-        if let Some(index) = map
-            .pixels
-            .iter()
-            .flatten()
-            .find(|&&i| i >= map.lights.len())
-        {
-            return Err(format!(
-                "light {index} is not among the {} listed",
-                map.lights.len()
-            ));
-        }
+        let size = (map.width, map.height);
+        runs::check_map(&map.pixels, size, map.lights.len(), "light")?;
         Ok(map)
     }
 

@@ -98,25 +98,8 @@ impl ObjectMap {
                 _ => return Err(format!("unknown line {line:?}")),
             }
         }
-        if map.pixels.len() != (map.width * map.height) as usize {
-            return Err(format!(
-                "{} pixels for a size of {}×{}",
-                map.pixels.len(),
-                map.width,
-                map.height
-            ));
-        }
-        if let Some(index) = map
-            .pixels
-            .iter()
-            .flatten()
-            .find(|&&i| i >= map.objects.len())
-        {
-            return Err(format!(
-                "object {index} is not among the {} listed",
-                map.objects.len()
-            ));
-        }
+        let size = (map.width, map.height);
+        runs::check_map(&map.pixels, size, map.objects.len(), "object")?;
         Ok(map)
     }
 }

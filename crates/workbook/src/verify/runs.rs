@@ -48,3 +48,27 @@ pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let (w, h) = text.split_once(' ').ok_or_else(bad)?;
     Ok((w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?))
 }
+
+/// Checks a map just read: one entry for each pixel of its size, and every
+/// index it names among the `listed` things of its kind (`what`: "object",
+/// "light"). The object and light maps share it.
+pub fn check_map<'a, P: 'a>(
+    pixels: &'a [P],
+    (width, height): (u32, u32),
+    listed: usize,
+    what: &str,
+) -> Result<(), String>
+where
+    &'a P: IntoIterator<Item = &'a usize>,
+{
+    if pixels.len() != (width * height) as usize {
+        return Err(format!(
+            "{} pixels for a size of {width}×{height}",
+            pixels.len()
+        ));
+    }
+    match pixels.iter().flatten().find(|&&i| i >= listed) {
+        Some(index) => Err(format!("{what} {index} is not among the {listed} listed")),
+        None => Ok(()),
+    }
+}
