@@ -8,13 +8,12 @@
 //! writes no picture, is left to it.
 
 use std::process::ExitCode;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
-use indicatif::ProgressDrawTarget;
 use raybook::CHAPTER;
 use raybook::toolkit::Scene;
-use raybook::workbench::cli::{EffectPlan, RenderArgs, Rendered, progress_bar, report};
-use raybook::workbench::cli::{end_quietly_when_output_closes, with_threads};
+use raybook::workbench::cli::end_quietly_when_output_closes;
+use raybook::workbench::cli::{EffectPlan, RenderArgs, Rendered, render_with_bar, report};
 
 use crate::output::Output;
 
@@ -65,23 +64,11 @@ fn planned(args: &RenderArgs) -> Result<(EffectPlan, Scene, String), String> {
     Ok((plan, scene, name))
 }
 
-/// The picture and its statistics, on `--threads` threads, with a progress
-/// bar that appears once the render has taken a second (unless `--quiet`).
+/// The picture and its statistics, on `--threads` threads, with the
+/// chapters' progress bar.
 fn rendered(
     args: &RenderArgs,
     scene: &Scene,
 ) -> Result<(raybook::toolkit::Image, raybook::toolkit::Stats), String> {
-    let bar = progress_bar(scene.image.height, args.quiet);
-    bar.set_draw_target(ProgressDrawTarget::hidden());
-    let shown = std::sync::Once::new();
-    let start = Instant::now();
-    let on_row = || {
-        bar.inc(1);
-        if !args.quiet && start.elapsed() > Duration::from_secs(1) {
-            shown.call_once(|| bar.set_draw_target(ProgressDrawTarget::stderr()));
-        }
-    };
-    let rendered = with_threads(args.threads, || raybook::render(scene, on_row));
-    bar.finish_and_clear();
-    rendered.map_err(|_| format!("cannot start {:?} rendering threads", args.threads))
+    render_with_bar(args, scene, |on_row| raybook::render(scene, on_row))
 }

@@ -357,8 +357,35 @@ fn run_loaded(
         return ExitCode::FAILURE;
     };
     println!("{plan}");
+    let start = Instant::now();
+    let rendered = render_with_bar(args, &scene, |on_row| render(&scene, on_row));
+    let Ok((image, stats)) = rendered else {
+        eprintln!("error: cannot start {:?} rendering threads", args.threads);
+        return ExitCode::FAILURE;
+    };
+    let seconds = start.elapsed();
+    let out = args.output_path(chapter);
+    if let Err(e) = image.save_png(&out) {
+        eprintln!("error: cannot write {}: {e}", out.display());
+        return ExitCode::FAILURE;
+    }
+    let rendered = Rendered {
+        image,
+        stats,
+        seconds,
+    };
+    report(chapter, &name, &out, &rendered);
+    ExitCode::SUCCESS
+}
+
+/// Renders on `--threads` threads, `render` calling its callback once a row,
+/// with a progress bar once a render has taken a second (unless `--quiet`).
+pub fn render_with_bar<T: Send>(
+    args: &RenderArgs,
+    scene: &Scene,
+    render: impl FnOnce(&(dyn Fn() + Sync)) -> T + Send,
+) -> Result<T, String> {
     let bar = progress_bar(scene.image.height, args.quiet);
-    // Quick renders show no bar: it appears once a render has taken a second.
     bar.set_draw_target(ProgressDrawTarget::hidden());
     let shown = std::sync::Once::new();
     let start = Instant::now();
@@ -368,29 +395,9 @@ fn run_loaded(
             shown.call_once(|| bar.set_draw_target(ProgressDrawTarget::stderr()));
         }
     };
-    let rendered = with_threads(args.threads, || render(&scene, &on_row));
-    let Ok((image, stats)) = rendered else {
-        eprintln!("error: cannot start {:?} rendering threads", args.threads);
-        return ExitCode::FAILURE;
-    };
-    let seconds = start.elapsed();
+    let rendered = with_threads(args.threads, || render(&on_row));
     bar.finish_and_clear();
-    let out = args.output_path(chapter);
-    if let Err(e) = image.save_png(&out) {
-        eprintln!("error: cannot write {}: {e}", out.display());
-        return ExitCode::FAILURE;
-    }
-    report(
-        chapter,
-        &name,
-        &out,
-        &Rendered {
-            image,
-            stats,
-            seconds,
-        },
-    );
-    ExitCode::SUCCESS
+    rendered.map_err(|_| format!("cannot start {:?} rendering threads", args.threads))
 }
 
 /// Runs `work` on a pool of `threads` threads, so that every parallel loop
