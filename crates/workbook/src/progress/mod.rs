@@ -14,20 +14,26 @@
 //! progress last ran, or, in watch mode, the one just saved) is tested
 //! first, so that its verdict comes about as fast as `cargo test -p` of it
 //! alone; the others follow, in order, and each row is shown as its chapter
-//! finishes.
+//! finishes. A chapter none of whose inputs changed since its last run is
+//! not tested again: its last result is shown (see `cache`). While one
+//! chapter's tests run, the next one's build goes on, if that chapter
+//! passed last time (so that it is likely to be needed).
 //!
 //! It works the same in the reference workspace (every chapter passes) and in
 //! a handout from `workbook handout`.
 
+mod cache;
 mod edited;
 mod order;
 mod parse;
 mod report;
+mod run;
 mod table;
 mod watch;
 
+use std::collections::VecDeque;
 use std::path::Path;
-use std::process::{Command, ExitCode};
+use std::process::ExitCode;
 
 pub use parse::{TestOutput, parse};
 pub use report::{ChapterResult, report};
@@ -47,31 +53,11 @@ pub struct ProgressArgs {
     /// save of a .rs or .toml file under chapters/. Ctrl-C stops.
     #[arg(long)]
     pub watch: bool,
-}
 
-/// Runs the tests of one chapter with cargo, from the workspace root, and
-/// reads their output.
-pub fn run_chapter(root: &Path, chapter: &ChapterEntry) -> Result<TestOutput, String> {
-    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    let out = Command::new(cargo)
-        .args(["test", "-p", &chapter.package(), "--color", "never"])
-        .current_dir(root)
-        .output()
-        .map_err(|e| format!("cannot run cargo: {e}"))?;
-    let text = format!(
-        "{}\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let mut parsed = parse(&text);
-    if !out.status.success() && parsed.failed == 0 && parsed.compile_error.is_none() {
-        // cargo failed before any test ran, and said why on its last line.
-        let last = text.lines().rev().find(|l| l.starts_with("error"));
-        parsed.compile_error = Some(last.unwrap_or("cargo test failed").to_owned());
-    }
-    let order = order::test_order(&root.join(chapter.path()).join("tests"));
-    order::in_chapter_order(&mut parsed, &order);
-    Ok(parsed)
+    /// Test every chapter again, also those none of whose files changed
+    /// since their last run (whose last result is shown otherwise).
+    #[arg(long)]
+    pub fresh: bool,
 }
 
 /// Runs `workbook progress`.
@@ -113,36 +99,94 @@ fn progress(args: &ProgressArgs, saved: Option<&Path>) -> Result<bool, String> {
     };
     edited::stamp(&root);
     let mut table = Table::new(&steps, &root);
-    for i in run_order(&steps, edited) {
-        let chapter = steps[i];
-        let output = if table.fails_before(i) && !args.all {
-            None
-        } else {
-            table.running(i);
-            Some(run_chapter(&root, chapter)?)
-        };
-        // Counted now, so that exercises written during the run count.
-        let exercises = workspace_regions(&root)?
-            .into_iter()
-            .filter(|(file, _, _)| file.starts_with(chapter.path()))
-            .collect();
-        let result = ChapterResult {
-            chapter,
-            output,
-            exercises,
-        };
-        table.done(i, result);
+    // The chapters before the first that changed: their last results.
+    let inputs = cache::Inputs::scan(&root);
+    let mut to_test = Vec::new();
+    for (i, chapter) in steps.iter().enumerate() {
+        let last = (!args.fresh && to_test.is_empty())
+            .then(|| inputs.unchanged_result(&root, chapter))
+            .flatten();
+        match last {
+            Some(output) => table.done(i, chapter_result(&root, chapter, Some(output), true)?),
+            None => to_test.push(i),
+        }
     }
+    let edited = edited.and_then(|e| steps.iter().position(|c| c.folder == e.folder));
+    let order = run_order(&to_test, edited);
+    test_chapters(args, &root, &steps, &mut table, &order, edited)?;
     Ok(table.finish())
 }
 
-/// The order to test `steps` in: the `edited` one first, then the others
-/// in the chapters' order.
-fn run_order(steps: &[&ChapterEntry], edited: Option<&ChapterEntry>) -> Vec<usize> {
-    let first = edited.and_then(|e| steps.iter().position(|c| c.folder == e.folder));
-    first
+/// Tests the chapters `order` (indices in `steps` and the table) in that
+/// order, the `edited` one alone; each row is shown when its chapter is
+/// done, and its result kept for the next run.
+fn test_chapters(
+    args: &ProgressArgs,
+    root: &Path,
+    steps: &[&'static ChapterEntry],
+    table: &mut Table,
+    order: &[usize],
+    edited: Option<usize>,
+) -> Result<(), String> {
+    let mut running: VecDeque<(usize, run::Started)> = VecDeque::new();
+    let mut next = order.iter().copied().peekable();
+    loop {
+        // Start the next chapter: at once if nothing runs, early if the
+        // ones running passed last time (so it will likely be run).
+        while let Some(&i) = next.peek() {
+            let alone = running.front().is_some_and(|(r, _)| Some(*r) == edited);
+            let likely = (running.iter()).all(|(r, _)| cache::passed_last_time(root, steps[*r]));
+            if !running.is_empty() && (running.len() >= 2 || alone || !(likely || args.all)) {
+                break;
+            }
+            next.next();
+            if table.fails_before(i) && !args.all {
+                table.done(i, chapter_result(root, steps[i], None, false)?);
+                continue;
+            }
+            table.running(i);
+            running.push_back((i, run::start(root, steps[i])?));
+        }
+        let Some((i, started)) = running.pop_front() else {
+            return Ok(());
+        };
+        let at = started.at;
+        let output = started.finish(root)?;
+        cache::save(root, steps[i], at, &output);
+        // Started early, after a chapter that has now failed: not shown.
+        let output = (args.all || !table.fails_before(i)).then_some(output);
+        table.done(i, chapter_result(root, steps[i], output, false)?);
+    }
+}
+
+/// A chapter's row: its `output` (None if not run, `reused` if that of
+/// its last run), and its exercises, counted now so that exercises written
+/// during the run count.
+fn chapter_result(
+    root: &Path,
+    chapter: &'static ChapterEntry,
+    output: Option<TestOutput>,
+    reused: bool,
+) -> Result<ChapterResult, String> {
+    let exercises = workspace_regions(root)?
         .into_iter()
-        .chain((0..steps.len()).filter(|i| Some(*i) != first))
+        .filter(|(file, _, _)| file.starts_with(chapter.path()))
+        .collect();
+    Ok(ChapterResult {
+        chapter,
+        output,
+        exercises,
+        reused,
+    })
+}
+
+/// The order to test the chapters `to_test` (indices in the table, in
+/// order) in: the `edited` one first, if it is to be tested, then the
+/// others in order.
+fn run_order(to_test: &[usize], edited: Option<usize>) -> Vec<usize> {
+    let first = edited.filter(|e| to_test.contains(e));
+    (first.into_iter())
+        .chain(to_test.iter().copied().filter(|i| Some(*i) != first))
         .collect()
 }
 
@@ -152,12 +196,11 @@ mod tests {
 
     #[test]
     fn the_edited_chapter_is_tested_first_then_the_others_in_order() {
-        let steps: Vec<_> = chapters::all().iter().filter(|c| is_a_step(c)).collect();
-        let third = steps[2];
-        assert_eq!(run_order(&steps, Some(third))[..4], [2, 0, 1, 3]);
-        assert_eq!(
-            run_order(&steps, None),
-            (0..steps.len()).collect::<Vec<_>>()
-        );
+        let all: Vec<usize> = (0..8).collect();
+        assert_eq!(run_order(&all, Some(2))[..4], [2, 0, 1, 3]);
+        assert_eq!(run_order(&all, None), all);
+        // Chapters 1 and 2 unchanged: shown, not tested.
+        assert_eq!(run_order(&all[2..], Some(4)), [4, 2, 3, 5, 6, 7]);
+        assert_eq!(run_order(&all[5..], Some(2)), [5, 6, 7]);
     }
 }

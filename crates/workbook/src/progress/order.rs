@@ -32,7 +32,13 @@ fn read_functions(file: &Path, names: &mut Vec<String>) {
     let Ok(text) = std::fs::read_to_string(file) else {
         return;
     };
-    let folder = file.parent().unwrap_or(Path::new("."));
+    // `mod name;` in main.rs is the file name.rs beside it; in other.rs,
+    // other/name.rs.
+    let beside = file.parent().unwrap_or(Path::new("."));
+    let folder = match file.file_stem().and_then(|s| s.to_str()) {
+        Some("main" | "mod" | "lib") | None => beside.to_owned(),
+        Some(stem) => beside.join(stem),
+    };
     for line in text.lines().map(str::trim) {
         if let Some(name) = line
             .strip_prefix("fn ")
@@ -70,9 +76,19 @@ mod tests {
             "mod split;\n#[test]\nfn entering_glass() {}\n#[test]\nfn an_air_bubble() {}\n",
         )
         .unwrap();
-        std::fs::write(dir.join("chapter06/split.rs"), "fn weights_add_up() {}\n").unwrap();
+        std::fs::write(
+            dir.join("chapter06/split.rs"),
+            "fn weights_add_up() {}\nmod short;\n",
+        )
+        .unwrap();
+        // A module of a module: split/short.rs.
+        std::fs::create_dir_all(dir.join("chapter06/split")).unwrap();
+        std::fs::write(dir.join("chapter06/split/short.rs"), "fn folds() {}\n").unwrap();
         let order = test_order(&dir);
-        assert_eq!(order, ["weights_add_up", "entering_glass", "an_air_bubble"]);
+        assert_eq!(
+            order,
+            ["weights_add_up", "folds", "entering_glass", "an_air_bubble"]
+        );
         let mut output = TestOutput {
             failed_tests: vec![
                 "an_air_bubble".into(),

@@ -1,7 +1,7 @@
 //! Reading what `cargo test` printed: passes, failures, snapshots, panics.
 
 /// What one `cargo test` run printed, in the parts that matter here.
-#[derive(Debug, Default, Clone, PartialEq, Eq)]
+#[derive(Debug, Default, Clone, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct TestOutput {
     /// Tests passed, summed over every test binary and the doctests.
     pub passed: usize,

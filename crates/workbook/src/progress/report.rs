@@ -14,6 +14,8 @@ pub struct ChapterResult {
     pub output: Option<TestOutput>,
     /// Its exercise regions: file, line, region.
     pub exercises: Vec<(PathBuf, usize, Region)>,
+    /// Is `output` that of its last run (none of its files changed since)?
+    pub reused: bool,
 }
 
 impl ChapterResult {
@@ -126,6 +128,11 @@ pub fn row_line(result: &ChapterResult, here: bool, root: &Path) -> String {
             o.failed.to_string(),
             first_failure(o, root),
         ),
+    };
+    let failure = match (result.reused, failure.is_empty()) {
+        (false, _) => failure,
+        (true, true) => "unchanged since the last run".to_owned(),
+        (true, false) => format!("{failure} (unchanged since the last run)"),
     };
     let marker = if here { "→" } else { "" };
     let exercises = result.exercises_done();
@@ -258,6 +265,7 @@ mod tests {
                     )
                 })
                 .collect(),
+            reused: false,
         }
     }
 
@@ -290,6 +298,28 @@ mod tests {
             "{text}"
         );
         assert!(text.contains("`cargo test -p ch03-lambert`"));
+    }
+
+    #[test]
+    fn a_result_of_the_last_run_says_so() {
+        let ok = "test result: ok. 5 passed; 0 failed; 0 ignored\n";
+        let mut rows = [
+            row("01-rays", Some(ok), ""),
+            row("02-hits", Some(FAILING), ""),
+        ];
+        for row in &mut rows {
+            row.reused = true;
+        }
+        let text = report(&rows, Path::new("/w"));
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(
+            lines[1].ends_with("  unchanged since the last run"),
+            "{text}"
+        );
+        assert!(
+            lines[2].ends_with(" (unchanged since the last run)"),
+            "{text}"
+        );
     }
 
     #[test]
