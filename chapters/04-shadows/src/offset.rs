@@ -22,9 +22,9 @@ use crate::toolkit::Vec3;
 ///   will not do: the distance must grow with e, that is with the size of
 ///   the coordinates.
 /// * It must clear the true surface by at least e/2, near the origin and
-///   far from it; `tests/offset.rs` checks that on thousands of hits. (Why
-///   e is enough, and how pbrt makes it a proof: the README, section *Is e
-///   enough? (optional)*.)
+///   far from it; `tests/chapter04/offset.rs` checks that on thousands of
+///   hits. (Why e is enough, and how pbrt makes it a proof: the README,
+///   section *Is e enough? (optional)*.)
 pub fn offset_origin(hit: &Hit, towards: Vec3) -> Vec3 {
     // EXERCISE(ch04-offset): the hit point moved off the surface by its error bound, along the geometric normal, to the side that `towards` leaves by
     crate::workbench::exercise::solution_begins("ch04-offset");

@@ -7,13 +7,20 @@
 //! * `triangles`: the lecture's plane-then-α-and-β test against the watertight one;
 //! * `closest`: the closest hit among a scene's objects;
 //! * `pictures`: the lecture's methods drawing the flat picture, the snapshots,
-//!   and the snapshot tolerance on this chapter's own pictures.
+//!   and the snapshot tolerance on this chapter's own pictures;
+//! * `cone`: the bonus primitive, cones and cylinders;
+//! * `ray_tree`: `--pixel X,Y`, the ray tree of one pixel as text and JSON.
 
 mod closest;
 mod pictures;
 mod planes;
 mod spheres;
 mod triangles;
+
+/// The bonus cones and cylinders: exact cases, then random rays.
+mod cone;
+/// `--pixel X,Y`: the chapter binary prints a pixel's ray tree, text and JSON.
+mod ray_tree;
 
 use ch02_hits::toolkit::{Image, Scene};
 use ch02_hits::{CHAPTER, Method, View, render_hits};

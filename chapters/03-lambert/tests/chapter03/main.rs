@@ -6,7 +6,8 @@
 //! * `direct_light`: the lights added up, ambient light, and which lights
 //!   `visible` is asked about;
 //! * `spot`: the spot light's smooth cone, and nothing lit outside it;
-//! * `pictures`: the whole picture in ambient light, clamping, and the snapshot.
+//! * `pictures`: the whole picture in ambient light, clamping, and the snapshot;
+//! * `cli`: the chapter binary on a later chapter's scene or option, and on a bad scene.
 //!
 //! Here: the scenes the modules share, a lit sphere and a floor seen from above.
 
@@ -14,6 +15,9 @@ mod direct_light;
 mod lambert;
 mod pictures;
 mod spot;
+
+/// The chapter binary's command line: later chapters' scenes and options, a bad scene.
+mod cli;
 
 use ch03_lambert::scene_files;
 use ch03_lambert::toolkit::{Color, Image, Scene, Vec3};

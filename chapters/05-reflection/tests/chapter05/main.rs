@@ -10,7 +10,9 @@
 //! * `recursion`: `trace` and `follow_secondary_rays` against a tracer whose
 //!   answers the test fixes;
 //! * `pictures`: two facing mirrors whose pixels are known exactly, the
-//!   depth limit, and the snapshots.
+//!   depth limit, and the snapshots;
+//! * `ray_tree`: `--pixel X,Y --json`, mirror rays, their weights and the
+//!   depth limit.
 //!
 //! Here: the mirror floor the first three share, and the rays that hit it.
 
@@ -18,6 +20,9 @@ mod highlight;
 mod mirror;
 mod pictures;
 mod recursion;
+
+/// `--pixel X,Y --json`: mirror rays, their weights, and the depth limit.
+mod ray_tree;
 
 use ch05_reflection::scene_files;
 use ch05_reflection::toolkit::{Color, Scene, Vec3};

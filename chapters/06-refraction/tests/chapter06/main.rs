@@ -428,3 +428,7 @@ fn snapshot_bubble() {
         .with_size(160, 120);
     assert_image("06-refraction", "bubble", &render_glass(&scene, || {}).0);
 }
+
+// Last: `workbook progress` ranks failures in this file's order, theirs after these.
+/// `--pixel X,Y`: the ray tree at glass, its split, colours and short form.
+mod ray_tree;

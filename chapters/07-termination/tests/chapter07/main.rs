@@ -248,3 +248,7 @@ fn snapshot_default() {
     let (image, _) = render_terminated(&scene, Termination::of(&scene), || {});
     assert_image("07-termination", "default", &image);
 }
+
+// Last: `workbook progress` ranks failures in this file's order, theirs after these.
+/// `--pixel X,Y --json`: which criterion ended each path.
+mod ray_tree;

@@ -5,7 +5,6 @@ use std::process::Command;
 use serde_json::Value;
 
 /// The short tree, its folds, `--full` and the picture (`--svg`).
-#[path = "ray_tree/short.rs"]
 mod short;
 
 /// The tree the chapter binary prints for `args`.
