@@ -31,9 +31,11 @@ mod run;
 mod table;
 mod watch;
 
-use std::collections::VecDeque;
+use std::collections::{BTreeMap, VecDeque};
+use std::ffi::OsStr;
 use std::path::Path;
 use std::process::ExitCode;
+use std::sync::mpsc;
 
 pub use parse::{TestOutput, parse};
 pub use report::{ChapterResult, report};
@@ -90,94 +92,145 @@ fn is_a_step(chapter: &ChapterEntry) -> bool {
 /// chapter run passed. `saved` is the file whose save started this run
 /// (watch mode).
 fn progress(args: &ProgressArgs, saved: Option<&Path>) -> Result<bool, String> {
-    let root = current_workspace()?;
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    progress_in(&current_workspace()?, &cargo, args, saved)
+}
+
+/// [`progress`] in the workspace at `root`, testing with the program `cargo`.
+fn progress_in(
+    root: &Path,
+    cargo: &OsStr,
+    args: &ProgressArgs,
+    saved: Option<&Path>,
+) -> Result<bool, String> {
     let steps: Vec<&'static ChapterEntry> =
         chapters::all().iter().filter(|c| is_a_step(c)).collect();
     let edited = match saved {
-        Some(file) => edited::chapter_of(&root, &steps, file),
-        None => edited::last_run(&root).and_then(|t| edited::first_changed(&root, &steps, t)),
+        Some(file) => edited::chapter_of(root, &steps, file),
+        None => edited::last_run(root).and_then(|t| edited::first_changed(root, &steps, t)),
     };
-    edited::stamp(&root);
-    let mut table = Table::new(&steps, &root);
+    edited::stamp(root);
+    let run = Run {
+        args,
+        cargo,
+        root,
+        steps: &steps,
+    };
+    let mut table = Table::new(&steps, root);
     // The chapters before the first that changed: their last results.
-    let inputs = cache::Inputs::scan(&root);
+    let inputs = cache::Inputs::scan(root);
     let mut to_test = Vec::new();
     for (i, chapter) in steps.iter().enumerate() {
         let last = (!args.fresh && to_test.is_empty())
-            .then(|| inputs.unchanged_result(&root, chapter))
+            .then(|| inputs.unchanged_result(root, chapter))
             .flatten();
         match last {
-            Some(output) => table.done(i, chapter_result(&root, chapter, Some(output), true)?),
+            Some(output) => table.done(i, run.row(i, Some(output), true)?),
             None => to_test.push(i),
         }
     }
     let edited = edited.and_then(|e| steps.iter().position(|c| c.folder == e.folder));
-    let order = run_order(&to_test, edited);
-    test_chapters(args, &root, &steps, &mut table, &order, edited)?;
+    run.test(&mut table, &run_order(&to_test, edited), edited)?;
     Ok(table.finish())
 }
 
-/// Tests the chapters `order` (indices in `steps` and the table) in that
-/// order, the `edited` one alone; each row is shown when its chapter is
-/// done, and its result kept for the next run.
-fn test_chapters(
-    args: &ProgressArgs,
-    root: &Path,
-    steps: &[&'static ChapterEntry],
-    table: &mut Table,
-    order: &[usize],
-    edited: Option<usize>,
-) -> Result<(), String> {
-    let mut running: VecDeque<(usize, run::Started)> = VecDeque::new();
-    let mut next = order.iter().copied().peekable();
-    loop {
-        // Start the next chapter: at once if nothing runs, early if the
-        // ones running passed last time (so it will likely be run).
-        while let Some(&i) = next.peek() {
-            let alone = running.front().is_some_and(|(r, _)| Some(*r) == edited);
-            let likely = (running.iter()).all(|(r, _)| cache::passed_last_time(root, steps[*r]));
-            if !running.is_empty() && (running.len() >= 2 || alone || !(likely || args.all)) {
-                break;
-            }
-            next.next();
-            if table.fails_before(i) && !args.all {
-                table.done(i, chapter_result(root, steps[i], None, false)?);
-                continue;
-            }
-            table.running(i);
-            running.push_back((i, run::start(root, steps[i])?));
-        }
-        let Some((i, started)) = running.pop_front() else {
-            return Ok(());
-        };
-        let at = started.at;
-        let output = started.finish(root)?;
-        cache::save(root, steps[i], at, &output);
-        // Started early, after a chapter that has now failed: not shown.
-        let output = (args.all || !table.fails_before(i)).then_some(output);
-        table.done(i, chapter_result(root, steps[i], output, false)?);
-    }
+/// How many chapters' `cargo test` may run at once: one builds (cargo
+/// builds one at a time) while the tests of another run.
+const AT_ONCE: usize = 2;
+
+/// What a run of progress tests with.
+struct Run<'a> {
+    args: &'a ProgressArgs,
+    /// The program to run for `cargo test`.
+    cargo: &'a OsStr,
+    root: &'a Path,
+    /// The chapters, in the table's order.
+    steps: &'a [&'static ChapterEntry],
 }
 
-/// A chapter's row: its `output` (None if not run, `reused` if that of
-/// its last run), and its exercises, counted now so that exercises written
-/// during the run count.
-fn chapter_result(
-    root: &Path,
-    chapter: &'static ChapterEntry,
-    output: Option<TestOutput>,
-    reused: bool,
-) -> Result<ChapterResult, String> {
-    let exercises = workspace_regions(root)?
-        .into_iter()
-        .filter(|(file, _, _)| file.starts_with(chapter.path()))
-        .collect();
-    Ok(ChapterResult {
-        chapter,
-        output,
-        exercises,
-        reused,
-    })
+impl Run<'_> {
+    /// Tests the chapters `order` (rows of the table) in that order, the
+    /// `edited` one alone; each row is shown when its chapter and those
+    /// started before it are done, and its result kept for the next run.
+    fn test(
+        &self,
+        table: &mut Table,
+        order: &[usize],
+        edited: Option<usize>,
+    ) -> Result<(), String> {
+        let (done, finished) = mpsc::channel();
+        let mut queue: VecDeque<usize> = order.iter().copied().collect();
+        // Started and not shown yet, in the order they started; those ended.
+        let mut started: VecDeque<usize> = VecDeque::new();
+        let mut ended: BTreeMap<usize, TestOutput> = BTreeMap::new();
+        loop {
+            while let Some(&i) = queue.front() {
+                let running = started.len() - ended.len();
+                if !started.is_empty() && !self.early(&started, running, edited) {
+                    break;
+                }
+                queue.pop_front();
+                if table.fails_before(i) && !self.args.all {
+                    table.done(i, self.row(i, None, false)?);
+                    continue;
+                }
+                table.running(i);
+                run::start(self.cargo, self.root, self.steps[i], i, done.clone())?;
+                started.push_back(i);
+            }
+            if started.is_empty() {
+                return Ok(());
+            }
+            let end = (finished.recv()).map_err(|_| "a chapter's tests were lost".to_owned())?;
+            let output = end.output?;
+            cache::save(self.root, self.steps[end.row], end.started, &output);
+            ended.insert(end.row, output);
+            // Shown in the order they started.
+            while let Some(&i) = started.front() {
+                let Some(output) = ended.remove(&i) else {
+                    break;
+                };
+                started.pop_front();
+                // Started early, after a chapter that has now failed: not shown.
+                let output = (self.args.all || !table.fails_before(i)).then_some(output);
+                table.done(i, self.row(i, output, false)?);
+            }
+        }
+    }
+
+    /// May the next chapter start while the chapters `started` (of which
+    /// `running` still run) are not shown yet? Yes if fewer than
+    /// [`AT_ONCE`] run, none of them is the `edited` one (its verdict comes
+    /// first, alone), and they passed last time (so that it will likely be
+    /// run) or every chapter is to be run.
+    fn early(&self, started: &VecDeque<usize>, running: usize, edited: Option<usize>) -> bool {
+        let passed = |i: &usize| cache::passed_last_time(self.root, self.steps[*i]);
+        running < AT_ONCE
+            && !started.contains(&edited.unwrap_or(usize::MAX))
+            && (self.args.all || started.iter().all(passed))
+    }
+
+    /// Row `i`: its `output` (None if not run, `reused` if that of its
+    /// last run), and its exercises, counted now so that exercises written
+    /// during the run count.
+    fn row(
+        &self,
+        i: usize,
+        output: Option<TestOutput>,
+        reused: bool,
+    ) -> Result<ChapterResult, String> {
+        let chapter = self.steps[i];
+        let exercises = workspace_regions(self.root)?
+            .into_iter()
+            .filter(|(file, _, _)| file.starts_with(chapter.path()))
+            .collect();
+        Ok(ChapterResult {
+            chapter,
+            output,
+            exercises,
+            reused,
+        })
+    }
 }
 
 /// The order to test the chapters `to_test` (indices in the table, in
@@ -191,16 +244,4 @@ fn run_order(to_test: &[usize], edited: Option<usize>) -> Vec<usize> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_edited_chapter_is_tested_first_then_the_others_in_order() {
-        let all: Vec<usize> = (0..8).collect();
-        assert_eq!(run_order(&all, Some(2))[..4], [2, 0, 1, 3]);
-        assert_eq!(run_order(&all, None), all);
-        // Chapters 1 and 2 unchanged: shown, not tested.
-        assert_eq!(run_order(&all[2..], Some(4)), [4, 2, 3, 5, 6, 7]);
-        assert_eq!(run_order(&all[5..], Some(2)), [5, 6, 7]);
-    }
-}
+mod tests;
