@@ -4,6 +4,7 @@
 
 use std::fs;
 use std::path::PathBuf;
+use std::time::SystemTime;
 
 use super::*;
 
@@ -81,8 +82,6 @@ impl Fake {
         (passed, log.lines().map(str::to_owned).collect())
     }
 }
-
-use std::time::SystemTime;
 
 /// The chapters started, by number (two started at once may log in
 /// either order).
