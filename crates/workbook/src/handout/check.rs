@@ -319,6 +319,50 @@ pub fn whole_handout_builds(check: &Check) -> Result<(), String> {
     if ok {
         Ok(())
     } else {
+        let output = without_linker_commands(&output);
         Err(format!("the handout does not compile:\n{output}"))
+    }
+}
+
+/// cargo's output with each linker command rustc quotes in a failed link
+/// (one line of thousands of characters) shortened, so that the linker's
+/// own message after it, the reason, is what a reader and a CI log see.
+fn without_linker_commands(output: &str) -> String {
+    let shortened = output
+        .lines()
+        .map(|line| match line.split_once("= note:  \"") {
+            Some((indent, _)) if line.len() > 300 => {
+                format!(
+                    "{indent}= note: (the linker's command, {} characters, left out)",
+                    line.len()
+                )
+            }
+            _ => line.to_owned(),
+        });
+    shortened.collect::<Vec<_>>().join("\n")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::without_linker_commands;
+
+    #[test]
+    fn a_failed_link_shows_the_linkers_reason_not_its_command() {
+        let command = format!("  = note:  \"cc\" \"-m64\" {}", "\"x.rlib\" ".repeat(100));
+        let output = format!(
+            "error: linking with `cc` failed: exit status: 1\n  |\n{command}\n  \
+             = note: ld: final link failed: No space left on device"
+        );
+        let shown = without_linker_commands(&output);
+        assert!(!shown.contains("x.rlib"), "{shown}");
+        assert!(
+            shown.contains("the linker's command, 923 characters, left out"),
+            "{shown}"
+        );
+        assert!(shown.contains("No space left on device"), "{shown}");
+        assert!(
+            shown.starts_with("error: linking with `cc` failed"),
+            "{shown}"
+        );
     }
 }
