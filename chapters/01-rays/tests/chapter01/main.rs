@@ -302,3 +302,7 @@ fn n_samples_trace_n_primary_rays_and_average_them() {
     let again = render_sky(&scene, || {}).0;
     assert_eq!(image, again, "the same scene renders to the same picture");
 }
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;

@@ -36,3 +36,7 @@ pub(crate) fn scene() -> Scene {
 pub(crate) fn render(scene: &Scene, view: View) -> Image {
     render_hits(scene, view, Method::Lecture, || {}).0
 }
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;

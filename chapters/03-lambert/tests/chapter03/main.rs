@@ -100,3 +100,7 @@ pub(crate) const ALBEDO: Vec3 = Vec3::new(0.5, 0.6, 0.7);
 pub(crate) fn close(a: Color, b: Color) -> bool {
     (a - b).abs().max_element() < 1e-5
 }
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;

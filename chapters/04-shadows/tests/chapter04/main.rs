@@ -448,3 +448,7 @@ fn snapshot_box() {
 mod offset;
 /// The ray tree names the object that blocks a shadow ray.
 mod ray_tree;
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;

@@ -243,3 +243,7 @@ fn rmse_and_psnr() {
     assert!((rmse(&grey(1.0), &grey(3.0)) - 2.0).abs() < 1e-6);
     assert_eq!(rmse_clamped(&grey(1.0), &grey(3.0)), 0.0);
 }
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;

@@ -86,3 +86,7 @@ pub(crate) fn surface<'a>(scene: &'a Scene, ray: &Ray) -> Surface<'a> {
 pub(crate) fn close(a: Color, b: Color) -> bool {
     (a - b).abs().max_element() < 1e-5
 }
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;

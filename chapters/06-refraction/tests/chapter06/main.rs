@@ -432,3 +432,7 @@ fn snapshot_bubble() {
 // Last: `workbook progress` ranks failures in this file's order, theirs after these.
 /// `--pixel X,Y`: the ray tree at glass, its split, colours and short form.
 mod ray_tree;
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;

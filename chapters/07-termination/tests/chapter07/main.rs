@@ -252,3 +252,7 @@ fn snapshot_default() {
 // Last: `workbook progress` ranks failures in this file's order, theirs after these.
 /// `--pixel X,Y --json`: which criterion ended each path.
 mod ray_tree;
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;

@@ -176,3 +176,7 @@ fn snapshot_mesh() {
 // Last: `workbook progress` ranks failures in this file's order, theirs after these.
 /// Through the BVH, a pixel's ray tree is the same as chapter 7's.
 mod ray_tree;
+
+/// The text's Rust listings, each a test, and the check that the text
+/// shows them as they are here.
+mod listings;
