@@ -51,6 +51,20 @@ pub fn check(chapter: &Path) -> Result<usize, String> {
     }
 }
 
+/// [`check`] as a test: panics with everything that is wrong, or unless
+/// exactly `expected` listings were checked (so that a listing taken out of
+/// the text, or a test file that lost one, is noticed).
+#[track_caller]
+pub fn assert_checked(chapter: &str, expected: usize) {
+    match check(Path::new(chapter)) {
+        Ok(checked) => assert_eq!(
+            checked, expected,
+            "the Rust listings of {chapter}/README.md"
+        ),
+        Err(problems) => panic!("{problems}"),
+    }
+}
+
 /// A ```` ```rust ```` block of a text.
 struct Listing {
     /// The line of its opening fence, from 1.

@@ -5,9 +5,7 @@
 
 #[test]
 fn the_text_shows_these_listings() {
-    let chapter = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let checked = ch02_hits::workbench::listings::check(chapter).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(checked, 3, "the text's Rust listings");
+    ch02_hits::workbench::listings::assert_checked(env!("CARGO_MANIFEST_DIR"), 3);
 }
 
 #[test]

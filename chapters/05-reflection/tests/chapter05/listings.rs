@@ -5,10 +5,7 @@
 
 #[test]
 fn the_text_shows_these_listings() {
-    let chapter = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let checked =
-        ch05_reflection::workbench::listings::check(chapter).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(checked, 1, "the text's Rust listings");
+    ch05_reflection::workbench::listings::assert_checked(env!("CARGO_MANIFEST_DIR"), 1);
 }
 
 #[test]
