@@ -14,9 +14,9 @@
 //!
 //! [`check`] fails when a listing and its test differ, so the text cannot
 //! drift from the code. They used to be doctests, which `cargo test -p`
-//! compiles anew on every run: half a second a chapter, nearly half of
-//! what a student waits for after an edit. In the test binary they are
-//! compiled incrementally with the chapter's other tests.
+//! compiles anew on every run: about 0.45 s a chapter, 40% of `cargo test
+//! -p ch01-rays` after an edit (1.02 s, now 0.60 s). In the test binary
+//! they are compiled incrementally with the chapter's other tests.
 
 use std::fmt::Write as _;
 use std::path::Path;
