@@ -4,7 +4,6 @@ use ch03_lambert::scene_files;
 use ch03_lambert::{Arrival, arrival};
 use ch04_shadows::toolkit::scene::{Light, Object, Shape};
 use ch04_shadows::toolkit::{Image, Scene, Stats, Vec3};
-use ch04_shadows::workbench::snapshot::assert_image;
 use ch04_shadows::{
     CHAPTER, Incoming, Ray, ShadowStart, Surface, any_hit, closest_hit, light_is_free,
     offset_origin, render_shadows, shadow_ray,
@@ -427,28 +426,13 @@ fn the_box_keeps_its_light_inside() {
     );
 }
 
-#[test]
-fn snapshot_default() {
-    let scene = CHAPTER.default_scene().unwrap().with_size(160, 120);
-    assert_image(
-        "04-shadows",
-        "default",
-        &render(&scene, ShadowStart::Offset),
-    );
-}
-
-#[test]
-fn snapshot_box() {
-    let scene = scene_file("box.toml").with_size(160, 120);
-    assert_image("04-shadows", "box", &render(&scene, ShadowStart::Offset));
-}
+/// The chapter's pictures, against their references.
+mod pictures;
 
 // Last: `workbook progress` ranks failures in this file's order, theirs after these.
+/// The text's Rust listings, each a test, checked equal to the text.
+mod listings;
 /// The offset's margin: on thousands of hits, checked again in f64.
 mod offset;
 /// The ray tree names the object that blocks a shadow ray.
 mod ray_tree;
-
-/// The text's Rust listings, each a test, and the check that the text
-/// shows them as they are here.
-mod listings;
