@@ -11,7 +11,6 @@
 pub use ch00_toolkit as toolkit;
 pub use workbench;
 
-pub mod grade;
 pub mod handout;
 pub mod hint;
 pub mod progress;

@@ -28,9 +28,6 @@ enum Command {
     /// Writes a copy of the workbook for a student, with the exercises'
     /// solutions replaced by todo!("hint"); or runs the maintainers' checks.
     Handout(workbook::handout::HandoutArgs),
-    /// Grades a class: every student's handout in a folder, safely, into a
-    /// CSV gradebook, Gradescope results, JUnit XML and an HTML report.
-    Grade(workbook::grade::GradeArgs),
 }
 
 fn main() -> ExitCode {
@@ -40,6 +37,5 @@ fn main() -> ExitCode {
         Command::Hint(args) => workbook::hint::main(&args),
         Command::Verify(args) => workbook::verify::main(&args),
         Command::Handout(args) => workbook::handout::main(&args),
-        Command::Grade(args) => workbook::grade::main(&args),
     }
 }

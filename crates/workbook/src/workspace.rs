@@ -69,11 +69,18 @@ pub struct Written {
 
 /// Files that hold solutions and stay with the teacher: each chapter's
 /// `mistakes.toml` (its classic mistakes are the solutions with one change,
-/// and its `[[lecture]]` entries the lecture's own solutions). The
-/// maintainers' checks read them from the reference.
+/// and its `[[lecture]]` entries the lecture's own solutions), and the
+/// grader (`crates/grade`: its fixture writes solutions, and grading is
+/// not the student's tool). The maintainers' checks read them from the
+/// reference.
 pub fn teacher_only(file: &Path) -> bool {
-    file.starts_with("chapters") && file.file_name().is_some_and(|name| name == "mistakes.toml")
+    let mistakes = file.starts_with("chapters")
+        && file.file_name().is_some_and(|name| name == "mistakes.toml");
+    mistakes || file.starts_with(GRADER)
 }
+
+/// The teacher's grader, which no handout holds.
+pub const GRADER: &str = "crates/grade";
 
 /// Copies the workspace at `root` into `dir`, without the files that are
 /// [`teacher_only`], and with the selected exercise regions of every `.rs`

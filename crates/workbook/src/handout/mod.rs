@@ -72,7 +72,13 @@ pub fn main(args: &HandoutArgs) -> ExitCode {
 /// Writes the handout into `dir`, with the exercises of chapters 1 to
 /// `solved_through` left solved.
 fn write_handout(dir: &Path, solved_through: u32) -> Result<(), String> {
-    let root = current_workspace()?;
+    write_handout_from(&current_workspace()?, dir, solved_through)
+}
+
+/// [`write_handout`] from the workspace at `root` (the grader's tests make
+/// handouts of a still snapshot of the reference).
+pub fn write_handout_from(root: &Path, dir: &Path, solved_through: u32) -> Result<(), String> {
+    let root = root.to_owned();
     if let Ok(mut entries) = std::fs::read_dir(dir)
         && entries.next().is_some()
     {
@@ -87,7 +93,7 @@ fn write_handout(dir: &Path, solved_through: u32) -> Result<(), String> {
     let written = write_tree(&root, dir, |r| {
         r.chapter().is_none_or(|chapter| chapter > solved_through)
     })?;
-    // Which raybook it was made from, for `workbook grade`.
+    // Which raybook it was made from, for `grade`.
     record::Record::of_workspace(&root).write(dir)?;
     println!(
         "wrote {} files of {} to {}",

@@ -1,6 +1,6 @@
 //! `.raybook-handout.toml`: the raybook a handout was made from, its
 //! version and commit, written by `workbook handout` into the handout's
-//! root. `workbook grade` reads it to refuse a handout of another version
+//! root. `grade` reads it to refuse a handout of another version
 //! (whose exercises and tests may differ) and to warn about one made from
 //! another commit of the same version.
 
@@ -59,7 +59,7 @@ impl Record {
     pub fn write(&self, dir: &Path) -> Result<(), String> {
         let text = format!(
             "# Written by `workbook handout`: the raybook this handout was made from.\n\
-             # `workbook grade` reads it; please leave it as it is.\n{}",
+             # `grade` reads it; please leave it as it is.\n{}",
             toml::to_string(self).map_err(|e| format!("cannot write the record: {e}"))?
         );
         let path = dir.join(RECORD_FILE);

@@ -4,7 +4,7 @@
 //! properties. A student who was not graded has one case in error.
 
 use super::Class;
-use crate::grade::result::StudentResult;
+use crate::result::StudentResult;
 
 /// The JUnit XML text of the class.
 pub fn junit(class: &Class) -> String {

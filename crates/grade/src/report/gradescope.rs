@@ -6,7 +6,7 @@
 use serde_json::{Value, json};
 
 use super::Class;
-use crate::grade::result::StudentResult;
+use crate::result::StudentResult;
 
 /// The `results.json` text of `student`.
 pub fn results_json(class: &Class, student: &StudentResult) -> String {

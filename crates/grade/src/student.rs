@@ -19,7 +19,7 @@ use super::sandbox::{Limits, Ran, run};
 use super::share::copy_keeping_time;
 use super::submission::{Entry, Submission, changes, files, ignore_rules};
 use crate::progress::{TestOutput, parse};
-use crate::workbench::chapters::ChapterEntry;
+use workbench::chapters::ChapterEntry;
 
 /// Grades `submission` in a copy under `work`, and copies the pictures of
 /// its failures into `pictures` (the report's folder for this student).

@@ -14,8 +14,8 @@ use super::mapping::{ExerciseTests, Tests, exercise_tests};
 use super::sandbox::{Limits, run};
 use super::share::Shared;
 use crate::handout::record::Record;
-use crate::workbench::chapters::{self, ChapterEntry};
 use crate::workspace::{teacher_only, workspace_files, workspace_regions};
+use workbench::chapters::{self, ChapterEntry};
 
 /// How to prepare the reference and grade the students.
 #[derive(Debug, Clone)]
@@ -145,7 +145,7 @@ fn same_manifest(root: &Path) -> Result<(), String> {
     let path = root.join("chapters/chapters.toml");
     let text = std::fs::read_to_string(&path)
         .map_err(|e| format!("{} is not a raybook workspace: {e}", root.display()))?;
-    let built_in: &str = include_str!("../../../../chapters/chapters.toml");
+    let built_in: &str = include_str!("../../../chapters/chapters.toml");
     if text != built_in {
         return Err(format!(
             "{} differs from the manifest this workbook was built with: run the \

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use super::confine::confined;
-use crate::workbench::exercise::TAKE_OUT;
+use workbench::exercise::TAKE_OUT;
 
 /// Where a build or test run works: the copy, its target folder, and a
 /// scratch folder that is its HOME and TMPDIR.
@@ -48,7 +48,7 @@ pub fn cargo_test(place: &Place, package: &str, build_only: bool, jobs: usize) -
 
 /// A test binary of the copy, run as cargo runs it (in its package's
 /// folder), with the exercises `take_out` taken out (see
-/// [`crate::workbench::exercise`]).
+/// [`workbench::exercise`]).
 pub fn test_binary(place: &Place, binary: &Path, package_dir: &Path, take_out: &str) -> Command {
     let mut command = confined(binary.as_os_str(), &place.copy);
     command.current_dir(package_dir);

@@ -13,7 +13,7 @@
 //!   namespace's root may remount, its processes may not.
 //!
 //! Where that cannot be made, the network namespace alone is tried, and
-//! then nothing (`workbook grade` says which). Reading is not confined: a
+//! then nothing (`grade` says which). Reading is not confined: a
 //! test can read any file the teacher can (but has no network to send it
 //! anywhere).
 

@@ -1,5 +1,5 @@
 //! What the grading tests and the class benchmark share: a still snapshot
-//! of the reference, handouts made from it, the `workbook grade` command,
+//! of the reference, handouts made from it, the `grade` command,
 //! the gradebook read back, and a fingerprint of a class folder.
 
 #![allow(dead_code)]
@@ -25,26 +25,16 @@ pub fn snapshot_reference(dir: &Path) -> PathBuf {
     dir.canonicalize().unwrap()
 }
 
-/// `workbook handout --solved-through N DIR`, made from `reference`.
+/// `workbook handout --solved-through N DIR`, made from `reference`
+/// (the library call, which prints what the command prints).
 pub fn handout(reference: &Path, dir: &Path, solved_through: u32) {
-    let out = Command::new(env!("CARGO_BIN_EXE_workbook"))
-        .args(["handout", "--solved-through", &solved_through.to_string()])
-        .arg(dir)
-        .current_dir(reference)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    workbook::handout::write_handout_from(reference, dir, solved_through).unwrap();
 }
 
-/// `workbook grade ARGS --reference R --out OUT --chapters 1-3`: what it
+/// `grade ARGS --reference R --out OUT --chapters 1-3`: what it
 /// printed (stdout, then stderr). Panics if it fails.
 pub fn grade(reference: &Path, out: &Path, args: &[&OsStr]) -> String {
-    let run = Command::new(env!("CARGO_BIN_EXE_workbook"))
-        .arg("grade")
+    let run = Command::new(env!("CARGO_BIN_EXE_grade"))
         .args(args)
         .arg("--reference")
         .arg(reference)
@@ -58,7 +48,7 @@ pub fn grade(reference: &Path, out: &Path, args: &[&OsStr]) -> String {
         String::from_utf8_lossy(&run.stdout),
         String::from_utf8_lossy(&run.stderr)
     );
-    assert!(run.status.success(), "workbook grade failed:\n{text}");
+    assert!(run.status.success(), "grade failed:\n{text}");
     text
 }
 

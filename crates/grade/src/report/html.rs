@@ -12,8 +12,8 @@ use std::path::{Path, PathBuf};
 
 use super::junit::escape;
 use super::{Class, points};
-use crate::grade::result::{ChapterRun, StudentResult};
-use crate::workbench::chapters;
+use crate::result::{ChapterRun, StudentResult};
+use workbench::chapters;
 
 /// The page's style: readable, compact, pictures pixelated when enlarged.
 const STYLE: &str = "body{font:14px/1.4 system-ui,sans-serif;margin:1.5em;color:#222}\

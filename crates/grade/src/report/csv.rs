@@ -3,7 +3,7 @@
 //! version and commit on every row, for a spreadsheet or an LMS import.
 
 use super::{Class, points};
-use crate::grade::result::StudentResult;
+use crate::result::StudentResult;
 
 /// The gradebook's text (RFC 4180: commas, quoted fields, CRLF).
 pub fn gradebook(class: &Class) -> String {

@@ -1,4 +1,4 @@
-//! `workbook grade`: a teacher grades a class, every student's handout in
+//! `cargo run -p grade`: a teacher grades a class, every student's handout in
 //! one run, or one submission as Gradescope's autograder runs it.
 //!
 //! For each student, each chapter's tests passed and failed, each exercise
@@ -37,8 +37,11 @@
 //! student's target folder are the shared build's own files, which a test
 //! could overwrite in place. Without namespaces (another OS, or a system
 //! that forbids them), a test can also write anywhere the teacher can. For
-//! a class one does not trust, run `workbook grade` itself inside a
+//! a class one does not trust, run `grade` itself inside a
 //! container or a throwaway account, as Gradescope does.
+
+use ch00_toolkit as toolkit;
+use workbook::{handout, progress, regions, workspace};
 
 mod cargo;
 mod class;
@@ -60,10 +63,10 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use crate::workbench::chapters::{self, ChapterEntry};
-use crate::workspace::current_workspace;
 use reference::{Reference, Settings};
 use sandbox::Limits;
+use workbench::chapters::{self, ChapterEntry};
+use workbook::workspace::current_workspace;
 
 pub use result::{ChapterRun, StudentResult, Verdict};
 
@@ -72,7 +75,7 @@ pub use result::{ChapterRun, StudentResult, Verdict};
 /// cache of an older workbook is never read as this one's.
 const CACHE_FORMAT: &str = "grade-cache-1";
 
-/// `workbook grade`: grades a class of handouts against the reference.
+/// `grade`: grades a class of handouts against the reference.
 #[derive(clap::Args, Debug, Clone)]
 pub struct GradeArgs {
     /// The class: a folder with one subfolder per student, each a handout
@@ -134,7 +137,7 @@ pub struct GradeArgs {
     pub again: bool,
 }
 
-/// Runs `workbook grade`.
+/// Runs `grade`.
 pub fn main(args: &GradeArgs) -> ExitCode {
     match grade(args) {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,4 +1,4 @@
-//! `workbook grade` on a fixture class (issue 29): seven handouts made in the
+//! `grade` on a fixture class (issue 29): seven handouts made in the
 //! test from a snapshot of the reference with `workbook handout` and small
 //! edits, and five folders that are not handouts. (The snapshot keeps the
 //! test's reference still while others edit the workspace.)
@@ -24,7 +24,7 @@
 //! step (a plain `cargo test` says it was not asked and does nothing):
 //!
 //! ```text
-//! RAYBOOK_GRADE_FIXTURE=1 cargo test -p workbook --test grade_fixture -- --nocapture
+//! RAYBOOK_GRADE_FIXTURE=1 cargo test -p grade --test grade_fixture -- --nocapture
 //! ```
 
 mod grade_support;

@@ -1,10 +1,10 @@
-//! The class benchmark of `workbook grade` (issue 29): 20 handouts in mixed
+//! The class benchmark of `grade` (issue 29): 20 handouts in mixed
 //! states, and the seconds per student once the reference is prepared and
 //! a first student graded. A measurement, not a check: it asserts nothing
 //! about the time and runs only when asked. Run it with
 //!
 //! ```text
-//! RAYBOOK_GRADE_BENCH=1 cargo test -p workbook --test grade_bench -- --nocapture
+//! RAYBOOK_GRADE_BENCH=1 cargo test -p grade --test grade_bench -- --nocapture
 //! ```
 //!
 //! `RAYBOOK_BENCH_CHAPTERS` chooses the chapters graded (default `1-3`;
@@ -99,10 +99,9 @@ fn mixed_states(reference: &Path, class: &Path) -> Vec<String> {
     names
 }
 
-/// `workbook grade CLASS` with the chapters given; what it printed.
+/// `grade CLASS` with the chapters given; what it printed.
 fn grade(reference: &Path, out: &Path, class: &Path, chapters: &str) -> String {
-    let run = Command::new(env!("CARGO_BIN_EXE_workbook"))
-        .arg("grade")
+    let run = Command::new(env!("CARGO_BIN_EXE_grade"))
         .arg(class)
         .arg("--reference")
         .arg(reference)

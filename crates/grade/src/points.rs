@@ -73,7 +73,7 @@ impl Points {
 /// one point, with its hint as a comment.
 fn template(exercises: &[ExerciseTests]) -> String {
     let mut text = String::from(
-        "# Points per exercise for `workbook grade`. Edit them and grade again:\n\
+        "# Points per exercise for `grade`. Edit them and grade again:\n\
          # only the scores change (the test results are kept). An exercise not\n\
          # listed here gets `default`.\n\
          default = 1.0\n\n[exercise]\n",
