@@ -24,6 +24,7 @@
 
 mod cache;
 mod edited;
+mod lesson;
 mod order;
 mod parse;
 mod report;
