@@ -10,8 +10,8 @@
 //! (they build on it, so they would fail too), `--all` runs them anyway.
 //! The last line says what to do next.
 //!
-//! After an edit, the chapter edited (the first whose files changed since
-//! progress last ran, or, in watch mode, the one just saved) is tested
+//! After an edit, the chapter edited (the one whose content changed last
+//! since progress last ran, or, in watch mode, the one just saved) is tested
 //! first, so that its verdict comes about as fast as `cargo test -p` of it
 //! alone; the others follow, in order, and each row is shown as its chapter
 //! finishes. A chapter none of whose inputs changed since its last run is
@@ -108,9 +108,9 @@ fn progress_in(
         chapters::all().iter().filter(|c| is_a_step(c)).collect();
     let edited = match saved {
         Some(file) => edited::chapter_of(root, &steps, file),
-        None => edited::last_run(root).and_then(|t| edited::first_changed(root, &steps, t)),
+        None => edited::last_run(root).and_then(|t| edited::last_changed(root, &steps, t)),
     };
-    edited::stamp(root);
+    edited::stamp(root, &steps);
     let run = Run {
         args,
         cargo,
