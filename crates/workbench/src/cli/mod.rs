@@ -113,7 +113,10 @@ pub struct RenderArgs {
     /// shadow ray finds it blocked; the secondary rays with their weights;
     /// the colour each ray brings back; and why each path ends. It follows
     /// one ray through the pixel's centre, whatever the samples, and writes
-    /// no PNG. The tree is short unless --full is given.
+    /// no PNG. The tree is short unless --full is given. It needs no
+    /// --release: `cargo run -p chNN-name -- --pixel X,Y` uses the debug
+    /// build that `cargo test -p` and `progress` already made, and answers
+    /// at once (a first --release build takes minutes).
     #[arg(long, value_name = "X,Y", value_parser = pixel)]
     pub pixel: Option<Pixel>,
 

@@ -106,6 +106,9 @@ fn progress_in(
 ) -> Result<bool, String> {
     let steps: Vec<&'static ChapterEntry> =
         chapters::all().iter().filter(|c| is_a_step(c)).collect();
+    if !root.join("target/workbook/results").exists() {
+        eprintln!("{FIRST_RUN}");
+    }
     let edited = match saved {
         Some(file) => edited::chapter_of(root, &steps, file),
         None => edited::last_run(root).and_then(|t| edited::last_changed(root, &steps, t)),
@@ -134,6 +137,11 @@ fn progress_in(
     run.test(&mut table, &run_order(&to_test, edited), edited)?;
     Ok(table.finish())
 }
+
+/// What progress says as it starts in a workspace where it never ran: the
+/// one long wait, and why (measured in issue 39 on a busy 2-core machine).
+pub const FIRST_RUN: &str = "progress: first run here: cargo builds the chapters' tests and the \
+crates they use, once (a few minutes on a 2-core machine; every later run answers in seconds)...";
 
 /// How many chapters' `cargo test` may run at once: one builds (cargo
 /// builds one at a time) while the tests of another run.
