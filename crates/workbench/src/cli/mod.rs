@@ -113,10 +113,9 @@ pub struct RenderArgs {
     /// shadow ray finds it blocked; the secondary rays with their weights;
     /// the colour each ray brings back; and why each path ends. It follows
     /// one ray through the pixel's centre, whatever the samples, and writes
-    /// no PNG. The tree is short unless --full is given. It needs no
-    /// --release: `cargo run -p chNN-name -- --pixel X,Y` uses the debug
-    /// build that `cargo test -p` and `progress` already made, and answers
-    /// at once (a first --release build takes minutes).
+    /// no PNG. The tree is short unless --full is given. No --release:
+    /// `cargo run -p chNN-name -- --pixel X,Y` answers at once from the
+    /// debug build that the tests made (--release first builds for minutes).
     #[arg(long, value_name = "X,Y", value_parser = pixel)]
     pub pixel: Option<Pixel>,
 
