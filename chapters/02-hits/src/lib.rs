@@ -220,6 +220,17 @@ impl Method {
             Method::Robust => intersect(shape, ray, t_min, t_max),
         }
     }
+
+    /// Both roots of `ray`'s line meeting the sphere, nearest first, as
+    /// this method computes them: your [`sphere_roots_abc`] for the
+    /// lecture's, [`sphere_roots`] for the robust. The ray tree shows these,
+    /// the roots of the code that drew the pixel.
+    pub fn sphere_roots(self, center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> {
+        match self {
+            Method::Lecture => sphere_roots_abc(center, radius, ray),
+            Method::Robust => sphere_roots(center, radius, ray),
+        }
+    }
 }
 
 /// What the chapter-2 picture shows at each hit.

@@ -30,6 +30,6 @@ fn main() -> std::process::ExitCode {
         &CHAPTER,
         &args.render,
         |scene, on_row| render_hits(scene, args.view, args.method, on_row),
-        |scene, pixel| ray_tree::explain(scene, args.view, pixel),
+        |scene, pixel| ray_tree::explain(scene, args.view, args.method, pixel),
     )
 }

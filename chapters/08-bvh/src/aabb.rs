@@ -73,7 +73,11 @@ impl Aabb {
     /// in the box where it is in all three slabs: from the largest entry to
     /// the smallest exit. It meets the box when that interval is not empty.
     /// A ray parallel to a slab has 1/rd = ±∞ and gets the interval
-    /// (−∞, ∞) when it runs inside the slab, an empty one otherwise.
+    /// (−∞, ∞) when it runs strictly inside the slab, an empty one when
+    /// strictly outside. On a face's plane 0·∞ is NaN, and the comparisons
+    /// make that a miss on a min face, a hit on a max face: harmless, since
+    /// boxes are `padded` beyond their objects (the chapter's text, *The
+    /// slab test*).
     pub fn entry(&self, origin: Vec3, inverse: Vec3, t_min: f32, t_max: f32) -> Option<f32> {
         let t0 = (self.min - origin) * inverse;
         let t1 = (self.max - origin) * inverse;

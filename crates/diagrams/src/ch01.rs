@@ -158,7 +158,7 @@ fn camera_frame(camera: &Camera) -> crate::svg::Drawn {
         1.5,
     );
     svg.fact(
-        (bottom_mid + bottom_right) / 2.0 + xy(0.0, 32.0),
+        (bottom_mid + bottom_right) / 2.0 + xy(0.0, 38.0),
         "half_width = 2",
         LABEL.colour(MEASURE).middle(),
     );
@@ -181,13 +181,13 @@ fn camera_frame(camera: &Camera) -> crate::svg::Drawn {
     svg.arrow(e, view.at(eye + 1.3 * (p - eye)), RAY, 2.0);
     svg.dot(view.at(p), RAY);
     svg.text(
-        view.at(p) + xy(-34.0, -38.0),
+        view.at(p) + xy(-54.0, -40.0),
         "pixel (0, 0)",
         LABEL.colour(RAY).end(),
     );
     let point = format!("({}, {}, {})", num(p.x), num(p.y), num(p.z));
     svg.text_with_fact(
-        view.at(p) + xy(-34.0, -18.0),
+        view.at(p) + xy(-54.0, -20.0),
         &format!("P = {point}"),
         &point,
         LABEL.colour(RAY).end(),

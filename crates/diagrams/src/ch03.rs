@@ -38,7 +38,11 @@ fn lambert_footprint() -> crate::svg::Drawn {
     svg.line(xy(0.0, floor), xy(600.0, floor), SURFACE, 2.0);
     beam(&mut svg, xy(150.0, floor), 0.0, "facing the light: θ = 0");
     beam(&mut svg, xy(460.0, floor), 60.0, "tilted by θ = 60°");
-    svg.fact(xy(300.0, 342.0), "E = I_L · cos θ", LABEL.bold().middle());
+    svg.fact(
+        xy(300.0, 342.0),
+        "E = I_L · cos θ",
+        LABEL.bold().math().middle(),
+    );
     svg.finish()
 }
 
@@ -86,11 +90,15 @@ fn beam(svg: &mut Svg, hit: DVec2, theta: f64, title: &str) {
     // n and l at the beam's middle, and θ between them.
     let n_tip = hit + xy(0.0, -95.0);
     svg.arrow(hit, n_tip, NORMAL, 2.5);
-    svg.text(n_tip + xy(8.0, 4.0), "n", LABEL.colour(NORMAL).bold());
+    svg.text(
+        n_tip + xy(8.0, 4.0),
+        "n",
+        LABEL.colour(NORMAL).bold().math(),
+    );
     if theta > 0.0 {
         let l_tip = hit - travel * 95.0;
         svg.arrow(hit, l_tip, INK, 2.0);
-        svg.text(l_tip + xy(-6.0, -6.0), "l", LABEL.bold().end());
+        svg.text(l_tip + xy(-6.0, -6.0), "l", LABEL.bold().math().end());
         svg.angle(hit, 40.0, xy(0.0, -1.0), -travel, MEASURE);
         svg.text(
             hit + xy(-14.0, -46.0),
@@ -192,19 +200,20 @@ fn spot_cone() -> crate::svg::Drawn {
     svg.circle(light, 11.0, "#ffe27a", LIGHT);
     svg.text(light + xy(18.0, -6.0), "spot", LABEL.colour(LIGHT).bold());
     svg.fact(
-        xy(205.0, 112.0),
+        xy(222.0, 112.0),
         &format!("φ_i = {inner}°"),
         LABEL.colour(LIGHT).bold(),
     );
-    svg.text(xy(205.0, 130.0), "inner cone", NOTE.colour(LIGHT));
+    svg.text(xy(222.0, 130.0), "inner cone", NOTE.colour(LIGHT));
     svg.fact(
-        xy(205.0, 158.0),
+        xy(222.0, 158.0),
         &format!("φ_o = {outer}°"),
         LABEL.colour(MUTED).bold(),
     );
-    svg.text(xy(205.0, 176.0), "outer cone", NOTE);
+    svg.text(xy(222.0, 176.0), "outer cone", NOTE);
     svg.text(
-        foot(-middle) + xy(-10.0, -12.0),
+        // Left of the outer cone's line, which passes just above the point.
+        foot(-middle) + xy(-22.0, -12.0),
         &format!("φ = {middle}°"),
         LABEL.colour(MEASURE).end(),
     );
@@ -241,14 +250,15 @@ fn factor_plot(svg: &mut Svg, spot: (Vec3, f32, f32), middle: f32, s: f32, facto
     let mark = at(middle as f64, factor as f64);
     svg.dashed(at(middle as f64, 0.0), mark, MEASURE, 1.2);
     svg.dot(mark, MEASURE);
+    // Right of the 22° line, which crossed them beside the mark.
     svg.text_with_fact(
-        mark + xy(10.0, -20.0),
+        xy(at(outer as f64, 0.0).x + 8.0, mark.y - 20.0),
         &format!("s ≈ {}", fixed(s as f64, 3)),
         &format!("≈ {}", fixed(s as f64, 3)),
         LABEL.colour(MEASURE),
     );
     svg.text_with_fact(
-        mark + xy(10.0, 0.0),
+        xy(at(outer as f64, 0.0).x + 8.0, mark.y),
         &format!("S ≈ {}", fixed(factor as f64, 3)),
         &format!("≈ {}", fixed(factor as f64, 3)),
         LABEL.colour(MEASURE).bold(),

@@ -104,9 +104,16 @@ fn inset(svg: &mut Svg, p: DVec2, towards: DVec2) {
     let radius = 80.0;
     let lens = 14.0;
     svg.circle(p, lens, "none", MUTED);
-    let side = (centre - p).normalize().perp();
-    svg.line(p + side * lens, centre + side * radius, MUTED, 0.8);
-    svg.line(p - side * lens, centre - side * radius, MUTED, 0.8);
+    // One leader line, from the lens to the magnified view along the line
+    // between their centres: the notes below the view stay to its right,
+    // clear of it (two lines to the view's sides crossed the notes).
+    let towards_view = (centre - p).normalize();
+    svg.line(
+        p + towards_view * lens,
+        centre - towards_view * radius,
+        MUTED,
+        0.8,
+    );
     svg.circle(centre, radius, "#ffffff", MUTED);
     let unit = 34.0;
     let surface_y = centre.y + 10.0;
@@ -149,7 +156,7 @@ fn inset(svg: &mut Svg, p: DVec2, towards: DVec2) {
     ];
     for (i, note) in notes.iter().enumerate() {
         svg.text(
-            xy(centre.x - radius, 256.0 + 18.0 * i as f64),
+            xy(centre.x - 70.0, 256.0 + 18.0 * i as f64),
             note,
             NOTE.colour(INK),
         );

@@ -158,9 +158,16 @@ fn forward_backward() -> crate::svg::Drawn {
 /// random-looking diffuse bounce each. Returns how many reach the eye.
 fn forward(svg: &mut Svg, photons: usize) -> usize {
     let mut reached = 0;
-    for k in 0..photons {
+    // The arrowheads: where the photons hit, then the bounces' ends.
+    let direction = |k: usize| {
         let angle = std::f64::consts::TAU * (k as f64 + 0.3) / photons as f64;
-        let d = xy(angle.cos(), angle.sin());
+        xy(angle.cos(), angle.sin())
+    };
+    let mut heads: Vec<DVec2> = (0..photons)
+        .filter_map(|k| first_hit(SCENE.light, direction(k)).map(|(hit, _)| hit))
+        .collect();
+    for k in 0..photons {
+        let d = direction(k);
         let Some((hit, normal)) = first_hit(SCENE.light, d) else {
             svg.line(SCENE.light, to_edge(SCENE.light, d), "#e9cf8f", 1.2);
             continue;
@@ -175,24 +182,44 @@ fn forward(svg: &mut Svg, photons: usize) -> usize {
             normal.x * cos - normal.y * sin,
             normal.x * sin + normal.y * cos,
         );
-        let end = hit + out * 56.0;
         if reaches_eye(hit, out) {
             reached += 1;
             svg.arrow(hit, SCENE.eye, MEASURE, 2.0);
         } else {
+            let end = bounce_end(hit, out, &heads);
+            heads.push(end);
             svg.dashed_arrow(hit, end, "#c9a94f", 1.1);
         }
     }
     reached
 }
 
+/// Where the drawn bounce from `hit` along `out` ends: at most 56 px
+/// along, never past the surface it meets next or the panel's edge (an
+/// arrow poked through the floor), and shortened, if need be, so that its
+/// head keeps 16 px from the arrowheads already drawn (`heads`).
+fn bounce_end(hit: DVec2, out: DVec2, heads: &[DVec2]) -> DVec2 {
+    let room = first_hit(hit, out)
+        .map(|(p, _)| (p - hit).length() - 3.0)
+        .unwrap_or(f64::INFINITY)
+        .min((to_edge(hit, out) - hit).length());
+    let clear = |end: DVec2| heads.iter().all(|&h| (h - end).length() >= 16.0);
+    [56.0, 46.0, 36.0, 28.0, 0.7 * room, 0.5 * room]
+        .into_iter()
+        .map(|length: f64| hit + out * length.min(room))
+        .find(|&end| clear(end))
+        .unwrap_or(hit + out * 28.0_f64.min(room))
+}
+
 /// The right panel: an image plane of five pixels, one ray through each
 /// pixel's centre, and a shadow ray from each hit towards the light.
 fn backward(svg: &mut Svg, shift: DVec2) {
-    let look = (SCENE.ball + xy(-20.0, 0.0) - SCENE.eye).normalize();
+    // Aimed so that no ray's hit lies near the ✗ where the ball blocks a
+    // floor point's shadow ray (the ✗ must belong to that shadow ray).
+    let look = (SCENE.ball + xy(10.0, 0.0) - SCENE.eye).normalize();
     let side = look.perp();
     let plane = SCENE.eye + look * 40.0;
-    let half = 24.0;
+    let half = 28.0;
     let (a, b) = (plane - side * half, plane + side * half);
     svg.line(a + shift, b + shift, INK, 3.0);
     for i in 1..5 {

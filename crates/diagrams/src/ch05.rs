@@ -195,12 +195,12 @@ fn half_vector() -> crate::svg::Drawn {
     svg.text(
         hit + l * length + xy(-4.0, 22.0),
         "l",
-        LABEL.colour(LIGHT).bold().end(),
+        LABEL.colour(LIGHT).bold().math().end(),
     );
     svg.text(
         hit + v * length + xy(10.0, 4.0),
         "v",
-        LABEL.colour(RAY).bold(),
+        LABEL.colour(RAY).bold().math(),
     );
     svg.text(
         hit + v * (length + 16.0) + xy(10.0, -8.0),
@@ -210,15 +210,23 @@ fn half_vector() -> crate::svg::Drawn {
     svg.text(
         hit + xy(8.0, -length * 0.95 + 6.0),
         "n",
-        LABEL.colour(NORMAL).bold(),
+        LABEL.colour(NORMAL).bold().math(),
     );
     svg.text(
         hit + h * length * 0.8 + xy(-10.0, -4.0),
         "h",
-        LABEL.colour(MEASURE).bold().end(),
+        LABEL.colour(MEASURE).bold().math().end(),
     );
-    svg.text(hit + (l + v) * length + xy(-6.0, -6.0), "l + v", NOTE.end());
-    svg.fact(xy(20.0, 318.0), "h = (l + v) / |l + v|", LABEL.bold());
+    svg.text(
+        hit + (l + v) * length + xy(-6.0, -6.0),
+        "l + v",
+        NOTE.math().end(),
+    );
+    svg.fact(
+        xy(20.0, 318.0),
+        "h = (l + v) / |l + v|",
+        LABEL.bold().math(),
+    );
     falloff_plot(&mut svg);
     svg.finish()
 }

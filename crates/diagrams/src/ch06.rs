@@ -91,8 +91,10 @@ fn refraction_split() -> crate::svg::Drawn {
     let hit = xy(185.0, 205.0);
     let plot = Plot::new(hit, 140.0);
     glass(&mut svg, 0.0, 350.0, hit.y, 390.0);
-    svg.text(xy(14.0, hit.y - 10.0), "n₁ = 1 (air)", NOTE.colour(INK));
-    svg.text(xy(14.0, hit.y + 22.0), "n₂ = 1.5 (glass)", NOTE.colour(INK));
+    // The media's names in the corners, where the circle leaves room
+    // (beside the surface it crossed them).
+    svg.text(xy(14.0, 84.0), "n₁ = 1 (air)", NOTE.colour(INK));
+    svg.text(xy(14.0, 372.0), "n₂ = 1.5 (glass)", NOTE.colour(INK));
     svg.circle(hit, plot.scale, "none", MUTED);
     svg.dashed(plot.at(0.0, -1.12), plot.at(0.0, 1.12), MUTED, 1.0);
     svg.arrow(hit, plot.at(0.0, 0.6), NORMAL, 2.5);
@@ -126,7 +128,7 @@ fn refraction_split() -> crate::svg::Drawn {
         LABEL.colour(FRAME).middle(),
     );
     svg.text(
-        tip + xy(8.0, 18.0),
+        tip + xy(14.0, 26.0),
         "sin θ₂ = η sin θ₁",
         LABEL.colour(FRAME),
     );
@@ -137,7 +139,8 @@ fn refraction_split() -> crate::svg::Drawn {
         "θ₁",
         LABEL.colour(MEASURE).bold().end(),
     );
-    svg.text(hit + xy(14.0, 76.0), "θ₂", LABEL.colour(MEASURE).bold());
+    // Inside the angle, below its arc and clear of d'.
+    svg.text(hit + xy(5.0, 100.0), "θ₂", LABEL.colour(MEASURE).bold());
     let left = 365.0;
     svg.text(xy(left, 80.0), &format!("θ₁ = {theta1}°, so"), LABEL);
     svg.fact(
@@ -232,7 +235,8 @@ fn critical_angle_diagram() -> crate::svg::Drawn {
         NOTE.colour(REFRACT),
     );
     svg.text(
-        xy(370.0, surface - 10.0),
+        // High enough that the subscript clears the grazing ray.
+        xy(370.0, surface - 20.0),
         "grazing at θ_c",
         NOTE.colour(REFRACT),
     );

@@ -6,7 +6,7 @@
 use ch06_refraction::ray_tree::explain;
 use ch06_refraction::scene_files;
 use ch06_refraction::workbench::cli::Pixel;
-use ch06_refraction::workbench::ray_tree::{RayKind, RayNode, Side, num};
+use ch06_refraction::workbench::ray_tree::{Fold, Folded, RayKind, RayNode, Side, num};
 
 use crate::Diagram;
 use crate::svg::{HEADING, INK, LABEL, MIRROR, MUTED, NOTE, RAY, REFRACT, SURFACE, Svg, xy};
@@ -14,10 +14,12 @@ use crate::svg::{HEADING, INK, LABEL, MIRROR, MUTED, NOTE, RAY, REFRACT, SURFACE
 const CHAPTER: &str = "06-refraction";
 /// The pixel: it looks at the glass sphere head on.
 pub const PIXEL: Pixel = Pixel { x: 160, y: 110 };
-/// Rays deeper than this are folded (as the short text tree folds them).
-const MAX_SHOWN_DEPTH: u32 = 3;
-/// Rays whose path weight is below this in every channel are folded.
-const MIN_SHOWN_WEIGHT: f32 = 0.01;
+/// The short text tree's folds (rays deeper than 3 bounces or with a path
+/// weight below 0.01): the picture folds exactly what `--pixel` folds, so
+/// that its counts are the ones the student reads in the terminal.
+const FOLD: Fold = Fold::DEFAULT;
+const MAX_SHOWN_DEPTH: u32 = FOLD.depth;
+const MIN_SHOWN_WEIGHT: f32 = FOLD.weight;
 
 /// The tree of [`PIXEL`] in the chapter's default scene.
 pub fn tree() -> RayNode {
@@ -29,7 +31,7 @@ pub fn tree() -> RayNode {
 /// A row of the drawing: a ray, or the rays folded under a parent.
 enum Row<'a> {
     Ray(&'a RayNode),
-    Folded { rays: usize },
+    Folded { rays: usize, not_traced: usize },
 }
 
 struct Line<'a> {
@@ -38,17 +40,8 @@ struct Line<'a> {
     parent: Option<usize>,
 }
 
-fn shown(node: &RayNode) -> bool {
-    node.traced
-        && node.depth <= MAX_SHOWN_DEPTH
-        && node.path_weight.iter().any(|&w| w >= MIN_SHOWN_WEIGHT)
-}
-
-/// The rays traced in a subtree, its root included.
-fn traced(node: &RayNode) -> usize {
-    usize::from(node.traced) + node.secondary.iter().map(traced).sum::<usize>()
-}
-
+/// The rows of `node`'s subtree: the rays the short tree shows, and one row
+/// per group it folds, counted as [`Folded::below`] counts it.
 fn flatten<'a>(node: &'a RayNode, level: usize, parent: Option<usize>, lines: &mut Vec<Line<'a>>) {
     let me = lines.len();
     lines.push(Line {
@@ -56,20 +49,21 @@ fn flatten<'a>(node: &'a RayNode, level: usize, parent: Option<usize>, lines: &m
         level,
         parent,
     });
-    let mut folded = 0;
+    // The group's row stands where its first ray would, as in the text.
+    let mut group = Folded::below(node, &FOLD);
     for child in &node.secondary {
-        if shown(child) {
+        if !FOLD.folds(child) {
             flatten(child, level + 1, Some(me), lines);
-        } else {
-            folded += traced(child);
+        } else if let Some(group) = group.take() {
+            lines.push(Line {
+                row: Row::Folded {
+                    rays: group.rays,
+                    not_traced: group.not_traced,
+                },
+                level: level + 1,
+                parent: Some(me),
+            });
         }
-    }
-    if folded > 0 {
-        lines.push(Line {
-            row: Row::Folded { rays: folded },
-            level: level + 1,
-            parent: Some(me),
-        });
     }
 }
 
@@ -191,11 +185,15 @@ pub fn diagram() -> Diagram {
                 }
                 svg.text(xy(path_x, y), &num(node.path_weight[0]), LABEL.end());
             }
-            Row::Folded { rays } => {
+            Row::Folded { rays, not_traced } => {
                 let plural = if rays == 1 { "ray" } else { "rays" };
+                let untraced = match not_traced {
+                    0 => String::new(),
+                    n => format!(" ({n} not traced)"),
+                };
                 svg.text(
                     xy(x + 4.0, y),
-                    &format!("… {rays} more {plural}, deeper or weaker"),
+                    &format!("… {rays} more {plural}, deeper or weaker{untraced}"),
                     LABEL.colour(MUTED),
                 );
             }

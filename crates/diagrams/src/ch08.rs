@@ -87,6 +87,10 @@ fn ray_visit(nodes: &[build::Node]) -> Vec<Visit> {
     visit
 }
 
+/// How much larger, in pixels on every side, a box is drawn than the
+/// boxes one level deeper, so that no two nested boxes share an edge.
+const GAP: f64 = 4.0;
+
 /// The colour of the boxes at each depth.
 const DEPTH_COLOURS: [&str; 5] = [INK, FRAME, MIRROR, REFRACT, NORMAL];
 
@@ -130,7 +134,7 @@ fn bvh_boxes() -> crate::svg::Drawn {
         "Boxes in boxes: a BVH seen from above",
         HEADING,
     );
-    let (origin, scale) = (xy(45.0, 50.0), 50.0);
+    let (origin, scale) = (xy(45.0, 56.0), 50.0);
     let page = |x: f32, z: f32| origin + xy(x as f64, z as f64) * scale;
     let visit = ray_visit(&nodes);
     let mut tested = vec![false; objects.len()];
@@ -155,16 +159,19 @@ fn bvh_boxes() -> crate::svg::Drawn {
             );
         }
     }
-    // Parents first and thicker, so that a child's box, drawn on top, leaves
-    // its parent's colour showing where their edges meet.
+    // A box drawn at its true size would share edges with its children
+    // wherever a child reaches its parent's side (a box is the union of
+    // its children's), and the nesting could not be read. So each box is
+    // drawn GAP pixels larger on every side than the boxes one level
+    // deeper: the root outermost, the leaves at their true size.
     let levels = depth.iter().max().map_or(0, |&d| d + 1);
     for level in 0..levels {
+        let grow = xy(GAP, GAP) * (levels - 1 - level) as f64;
         for (_, node) in nodes.iter().enumerate().filter(|&(i, _)| depth[i] == level) {
-            let low = page(node.bounds.min.x, node.bounds.min.z);
-            let high = page(node.bounds.max.x, node.bounds.max.z);
+            let low = page(node.bounds.min.x, node.bounds.min.z) - grow;
+            let high = page(node.bounds.max.x, node.bounds.max.z) + grow;
             let colour = DEPTH_COLOURS[level.min(DEPTH_COLOURS.len() - 1)];
-            let width = 7.0 - 1.5 * level as f64;
-            svg.rect(low, high - low, "none", colour, width.max(1.2));
+            svg.rect(low, high - low, "none", colour, 2.0);
         }
     }
     let (from, to) = (RAY_ORIGIN, RAY_ORIGIN + 11.2 * RAY_DIRECTION);
@@ -178,7 +185,7 @@ fn bvh_boxes() -> crate::svg::Drawn {
     let boxes = visit.iter().filter(|&&v| v != Visit::Skipped).count();
     let spheres = tested.iter().filter(|&&t| t).count();
     svg.text(
-        xy(20.0, 436.0),
+        xy(20.0, 438.0),
         &format!(
             "the ray tests {boxes} of the {} boxes and {spheres} of the {} spheres (in blue)",
             nodes.len(),
@@ -187,15 +194,15 @@ fn bvh_boxes() -> crate::svg::Drawn {
         NOTE.colour(RAY),
     );
     svg.text(
-        xy(20.0, 396.0),
+        xy(20.0, 400.0),
         &format!(
-            "{} spheres, {} nodes, {} leaves; a parent's box is drawn with a thicker line",
+            "{} spheres, {} nodes, {} leaves; each box drawn a little outside its children",
             summary.primitives, summary.nodes, summary.leaves
         ),
         NOTE.colour(INK),
     );
     svg.text_with_fact(
-        xy(20.0, 416.0),
+        xy(20.0, 419.0),
         "a node of 4 objects or fewer stays a leaf when that is cheaper (SAH)",
         "4 objects or fewer",
         NOTE.colour(INK),
@@ -212,8 +219,8 @@ fn legend(svg: &mut Svg, levels: usize) {
         } else {
             format!("depth {d}")
         };
-        svg.rect(xy(x, 356.0), xy(22.0, 12.0), "none", colour, 2.0);
-        svg.text(xy(x + 28.0, 367.0), &name, LABEL.colour(colour));
+        svg.rect(xy(x, 362.0), xy(22.0, 12.0), "none", colour, 2.0);
+        svg.text(xy(x + 28.0, 373.0), &name, LABEL.colour(colour));
         x += 100.0;
     }
 }

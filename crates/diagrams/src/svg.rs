@@ -55,6 +55,10 @@ pub struct Font {
     pub anchor: &'static str,
     pub colour: &'static str,
     pub bold: bool,
+    /// Set as mathematics: serif italic, as print sets a variable, so
+    /// that the vector l cannot be read as the capital I of a sans-serif
+    /// (I_L, the light's irradiance, stands beside it).
+    pub math: bool,
 }
 
 impl Font {
@@ -65,6 +69,7 @@ impl Font {
             anchor: "start",
             colour: INK,
             bold: false,
+            math: false,
         }
     }
     pub const fn middle(self) -> Font {
@@ -84,6 +89,10 @@ impl Font {
     }
     pub const fn bold(self) -> Font {
         Font { bold: true, ..self }
+    }
+    /// Serif italic, for the names of vectors and variables (see [`Font::math`]).
+    pub const fn math(self) -> Font {
+        Font { math: true, ..self }
     }
 }
 
@@ -291,8 +300,13 @@ impl Svg {
         } else {
             ""
         };
+        let face = if font.math {
+            " font-family=\"serif\" font-style=\"italic\""
+        } else {
+            ""
+        };
         self.push(format_args!(
-            "<text x=\"{}\" y=\"{}\" font-size=\"{}\" text-anchor=\"{}\" fill=\"{}\"{weight}{HALO}>{}</text>",
+            "<text x=\"{}\" y=\"{}\" font-size=\"{}\" text-anchor=\"{}\" fill=\"{}\"{weight}{face}{HALO}>{}</text>",
             n(at.x),
             n(at.y),
             n(font.size),

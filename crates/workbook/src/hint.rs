@@ -1,6 +1,9 @@
 //! `workbook hint ID`: graded help for an exercise, never its code.
 //!
-//! Level 1 is a nudge: what to compute, the exercise's own hint. Level 2
+//! Each level adds to the one before something the `todo!` does not say.
+//! Level 1 is a nudge: what to compute, the exercise's own hint, and the
+//! contract of the function that holds it (its signature and doc comment:
+//! what it gets, what it returns, its edge cases). Level 2
 //! is the section of the chapter's README that derives it: the README
 //! marks it with a line `<!-- derives: ID -->`, and the whole section under
 //! the heading above that line is shown. Level 3 runs the chapter's tests
@@ -68,6 +71,13 @@ pub fn hint(args: &HintArgs) -> Result<String, String> {
         line,
         region.hint
     );
+    let source = std::fs::read_to_string(root.join(file)).unwrap_or_default();
+    text += &match contract(&source, *line) {
+        Some(contract) => {
+            format!("\nwhat it gets and returns (the contract above it):\n{contract}")
+        }
+        None => String::new(),
+    };
     if args.level >= 2 {
         text += &derivation(&root, chapter, region)?;
     }
@@ -85,6 +95,36 @@ pub fn hint(args: &HintArgs) -> Result<String, String> {
         _ => {}
     }
     Ok(text)
+}
+
+/// The contract of the function that holds the exercise whose marker is
+/// on line `line` (from 1) of `source`: its doc comment and signature,
+/// indented, or None if no function encloses it.
+pub fn contract(source: &str, line: usize) -> Option<String> {
+    let lines: Vec<&str> = source.lines().collect();
+    let above = &lines[..line.saturating_sub(1).min(lines.len())];
+    let is_fn = |l: &str| {
+        let l = l.trim_start();
+        let l = l.strip_prefix("pub ").unwrap_or(l);
+        let l = l.strip_prefix("pub(crate) ").unwrap_or(l);
+        l.starts_with("fn ")
+    };
+    let start = above.iter().rposition(|l| is_fn(l))?;
+    let end = (start..above.len()).find(|&i| above[i].trim_end().ends_with('{'))?;
+    let mut doc = start;
+    while doc > 0 {
+        let previous = above[doc - 1].trim_start();
+        if !(previous.starts_with("///") || previous.starts_with("#[")) {
+            break;
+        }
+        doc -= 1;
+    }
+    let shown = above[doc..=end]
+        .iter()
+        .filter(|l| !l.trim_start().starts_with("#["))
+        .map(|l| format!("  {}", l.trim()))
+        .collect::<Vec<_>>();
+    Some(shown.join("\n") + "\n")
 }
 
 /// The section of the chapter's README that derives `region`.
@@ -200,7 +240,26 @@ fn defined_in(dir: &Path, name: &str) -> Option<std::path::PathBuf> {
 
 #[cfg(test)]
 mod tests {
-    use super::section_with;
+    use super::{contract, section_with};
+
+    #[test]
+    fn the_nudge_shows_the_contract_of_the_function_around_the_exercise() {
+        let source = "use x;\n\n/// Not this one.\nfn other() {}\n\n/// The cone's factor.\n///\n/// * 1 inside.\n\
+                      #[must_use]\npub fn spot_factor(\n    axis: Vec3,\n) -> f32 {\n    let a = 1;\n    \
+                      // EXERCISE(ch03-spot): the factor\n    todo!()\n    // END EXERCISE\n}\n";
+        let marker = source
+            .lines()
+            .position(|l| l.contains("EXERCISE("))
+            .unwrap()
+            + 1;
+        let shown = contract(source, marker).unwrap();
+        assert_eq!(
+            shown,
+            "  /// The cone's factor.\n  ///\n  /// * 1 inside.\n  pub fn spot_factor(\n  axis: Vec3,\n  ) -> f32 {\n"
+        );
+        assert!(!shown.contains("the factor") && !shown.contains("let a"));
+        assert_eq!(contract("// EXERCISE(x): y\n", 1), None);
+    }
 
     const README: &str = "# Chapter\n\nintro\n\n## The sphere\n\n<!-- derives: ch02-sphere -->\nA ray meets a sphere where...\n\n### The roots\n\nt = ...\n\n## Triangles\n\nnot this\n";
 

@@ -290,12 +290,27 @@ fn every_exercise_has_a_hint_then_its_derivation_and_never_its_code() {
         let id = region.id.as_str();
         let (ok, nudge) = workbook(&["hint", id]);
         assert!(ok && nudge.contains(&region.hint), "{id}: {nudge}");
+        // Each level adds what the todo!'s text does not say: the nudge,
+        // the contract of the function that holds the exercise.
+        let todo_text = format!("{id}: {}", region.hint);
+        let added: Vec<&str> = (nudge.lines())
+            .filter(|l| l.trim_start().starts_with("///") && !todo_text.contains(l.trim()))
+            .collect();
+        assert!(
+            nudge.contains("fn ") && added.len() >= 2,
+            "{id}: the nudge adds no contract to the todo!'s text:\n{nudge}"
+        );
         assert!(
             nudge.contains(&format!("workbook hint {id} --level 2")),
             "{nudge}"
         );
         let (ok, derivation) = workbook(&["hint", id, "--level", "2"]);
         assert!(ok, "{derivation}");
+        assert!(
+            derivation.starts_with(nudge.split("\nmore help").next().unwrap())
+                && derivation.len() > nudge.len(),
+            "{id}: level 2 does not add to level 1:\n{derivation}"
+        );
         assert!(
             derivation.contains("\n#"),
             "{id}: its chapter's README marks no section `<!-- derives: {id} -->`:\n{derivation}"

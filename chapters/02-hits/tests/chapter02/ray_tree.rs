@@ -129,3 +129,57 @@ fn json_needs_a_pixel() {
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(stderr.contains("--pixel"), "{stderr}");
 }
+
+/// The roots the tree shows at `pixel` of `scene` drawn by `method`, and
+/// the ray through it.
+fn shown_roots(
+    scene: &ch02_hits::toolkit::Scene,
+    method: ch02_hits::Method,
+    pixel: ch02_hits::workbench::cli::Pixel,
+) -> Option<Option<[f32; 2]>> {
+    let (_, node) = ch02_hits::ray_tree::explain(scene, ch02_hits::View::Flat, method, pixel);
+    node.hit.map(|hit| hit.roots)
+}
+
+#[test]
+fn the_tree_shows_the_roots_of_the_quadratic_that_drew_the_pixel() {
+    // On the far sphere the lecture's quadratic and the stable one return
+    // different roots, and the lecture's "hits" far outside the true
+    // sphere, where the stable one finds none. The tree must show the
+    // roots of the method that drew the pixel: with the lecture's, the
+    // student's own sphere_roots_abc.
+    use ch02_hits::workbench::cli::Pixel;
+    use ch02_hits::{Method, sphere_roots, sphere_roots_abc};
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/far-sphere.toml");
+    let scene = ch02_hits::scene_files::load(path).unwrap();
+    let (center, radius) = (ch02_hits::toolkit::Vec3::new(0.3, 0.2, -10000.0), 1.0);
+    let (mut differing, mut outside) = (0, 0);
+    for y in (0..scene.image.height).step_by(7) {
+        for x in (0..scene.image.width).step_by(7) {
+            let pixel = Pixel { x, y };
+            let ray = ch02_hits::ray_tree::primary_ray(&scene, pixel);
+            let Some(shown) = shown_roots(&scene, Method::Lecture, pixel) else {
+                continue;
+            };
+            let own = sphere_roots_abc(center, radius, &ray).map(|(a, b)| [a, b]);
+            assert_eq!(
+                shown, own,
+                "pixel ({x}, {y}): not the lecture quadratic's roots"
+            );
+            let stable = sphere_roots(center, radius, &ray).map(|(a, b)| [a, b]);
+            match stable {
+                None => outside += 1,
+                Some(stable) if Some(stable) != own => differing += 1,
+                Some(_) => {}
+            }
+            if let Some(robust) = shown_roots(&scene, Method::Robust, pixel) {
+                assert_eq!(robust, stable, "pixel ({x}, {y}), --method robust");
+            }
+        }
+    }
+    assert!(
+        differing > 0 && outside > 0,
+        "the far sphere should have pixels where the two quadratics' roots differ ({differing}) \
+         and where only the lecture's hits ({outside}): the test would not see roots from the wrong one"
+    );
+}

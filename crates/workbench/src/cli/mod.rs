@@ -113,7 +113,9 @@ pub struct RenderArgs {
     /// shadow ray finds it blocked; the secondary rays with their weights;
     /// the colour each ray brings back; and why each path ends. It follows
     /// one ray through the pixel's centre, whatever the samples, and writes
-    /// no PNG. The tree is short unless --full is given.
+    /// no PNG. The tree is short unless --full is given. No --release:
+    /// `cargo run -p chNN-name -- --pixel X,Y` answers at once from the
+    /// debug build that the tests made (--release first builds for minutes).
     #[arg(long, value_name = "X,Y", value_parser = pixel)]
     pub pixel: Option<Pixel>,
 

@@ -10,8 +10,8 @@
 //! (they build on it, so they would fail too), `--all` runs them anyway.
 //! The last line says what to do next.
 //!
-//! After an edit, the chapter edited (the first whose files changed since
-//! progress last ran, or, in watch mode, the one just saved) is tested
+//! After an edit, the chapter edited (the one whose content changed last
+//! since progress last ran, or, in watch mode, the one just saved) is tested
 //! first, so that its verdict comes about as fast as `cargo test -p` of it
 //! alone; the others follow, in order, and each row is shown as its chapter
 //! finishes. A chapter none of whose inputs changed since its last run is
@@ -24,6 +24,7 @@
 
 mod cache;
 mod edited;
+mod lesson;
 mod order;
 mod parse;
 mod report;
@@ -105,11 +106,14 @@ fn progress_in(
 ) -> Result<bool, String> {
     let steps: Vec<&'static ChapterEntry> =
         chapters::all().iter().filter(|c| is_a_step(c)).collect();
+    if !root.join("target/workbook/results").exists() {
+        eprintln!("{FIRST_RUN}");
+    }
     let edited = match saved {
         Some(file) => edited::chapter_of(root, &steps, file),
-        None => edited::last_run(root).and_then(|t| edited::first_changed(root, &steps, t)),
+        None => edited::last_run(root).and_then(|t| edited::last_changed(root, &steps, t)),
     };
-    edited::stamp(root);
+    edited::stamp(root, &steps);
     let run = Run {
         args,
         cargo,
@@ -133,6 +137,11 @@ fn progress_in(
     run.test(&mut table, &run_order(&to_test, edited), edited)?;
     Ok(table.finish())
 }
+
+/// What progress says as it starts in a workspace where it never ran: the
+/// one long wait, and why (measured in issue 39 on a busy 2-core machine).
+pub const FIRST_RUN: &str = "progress: first run here: cargo builds the chapters' tests and the \
+crates they use, once (a few minutes on a 2-core machine; every later run answers in seconds)...";
 
 /// How many chapters' `cargo test` may run at once: one builds (cargo
 /// builds one at a time) while the tests of another run.

@@ -2,7 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
-use super::TestOutput;
+use super::{TestOutput, lesson};
 use crate::regions::Region;
 use crate::workbench::chapters::ChapterEntry;
 
@@ -21,6 +21,14 @@ pub struct ChapterResult {
 impl ChapterResult {
     fn open_exercises(&self) -> impl Iterator<Item = &(PathBuf, usize, Region)> {
         self.exercises.iter().filter(|(_, _, r)| r.is_open())
+    }
+
+    /// The exercise to write next (see [`lesson::next_exercise`]): the
+    /// advice names it, and the row's first failure is a test of it.
+    fn next_exercise(&self, root: &Path) -> Option<&(PathBuf, usize, Region)> {
+        let open: Vec<_> = self.open_exercises().collect();
+        let order = lesson::lesson_order(root, self.chapter);
+        lesson::next_exercise(&open, &order, self.output.as_ref())
     }
 
     /// Exercises written out of all: `1/2`, or `-` for a chapter without.
@@ -54,8 +62,16 @@ enum Lead<'a> {
     Passed,
 }
 
-fn lead(output: &TestOutput) -> Lead<'_> {
-    let told = (output.panics.iter()).find(|(test, _)| !test.starts_with("snapshot"));
+///
+/// A test that ran into the `todo!` of the exercise `next` (the one the
+/// advice names) leads before the others, so that the row and the advice
+/// speak of the same exercise.
+fn lead<'a>(output: &'a TestOutput, next: Option<&str>) -> Lead<'a> {
+    let told = |(test, _): &&(String, String)| !test.starts_with("snapshot");
+    let of_next =
+        |(_, message): &&(String, String)| next.is_some_and(|id| lesson::names(message, id));
+    let told = (output.panics.iter().filter(told).find(of_next))
+        .or_else(|| output.panics.iter().find(told));
     match (&output.compile_error, told, output.snapshots.first()) {
         (Some(error), _, _) => Lead::Compile(error),
         (None, Some((test, message)), _) => Lead::Told { test, message },
@@ -73,13 +89,13 @@ fn lead(output: &TestOutput) -> Lead<'_> {
 
 /// The first thing that went wrong in a chapter's run, in a few words;
 /// paths relative to the workspace `root`.
-fn first_failure(output: &TestOutput, root: &Path) -> String {
+fn first_failure(output: &TestOutput, next: Option<&str>, root: &Path) -> String {
     let relative = |p: &str| {
         Path::new(p)
             .strip_prefix(root)
             .map_or(p.to_owned(), |r| r.display().to_string())
     };
-    match lead(output) {
+    match lead(output, next) {
         Lead::Compile(error) => format!("does not compile: {error}"),
         Lead::Told { test, .. } | Lead::Failed(test) => format!("test {test}"),
         Lead::Snapshot {
@@ -126,7 +142,7 @@ pub fn row_line(result: &ChapterResult, here: bool, root: &Path) -> String {
         Some(o) => (
             o.passed.to_string(),
             o.failed.to_string(),
-            first_failure(o, root),
+            first_failure(o, result.next_exercise(root).map(|e| &*e.2.id), root),
         ),
     };
     let failure = match (result.reused, failure.is_empty()) {
@@ -167,23 +183,6 @@ pub fn report(results: &[ChapterResult], root: &Path) -> String {
     )
 }
 
-/// The exercises of `chapter` in the order its README derives them (the
-/// order of its `<!-- derives: ID -->` marks): the order to write them in.
-fn lesson_order(root: &Path, chapter: &ChapterEntry) -> Vec<String> {
-    let readme = std::fs::read_to_string(root.join(chapter.path()).join("README.md"));
-    let mut ids: Vec<String> = Vec::new();
-    for line in readme.unwrap_or_default().lines() {
-        let id = line
-            .trim()
-            .strip_prefix("<!-- derives: ")
-            .and_then(|l| l.strip_suffix(" -->"));
-        if let Some(id) = id.filter(|id| !ids.iter().any(|known| known == id)) {
-            ids.push(id.to_owned());
-        }
-    }
-    ids
-}
-
 /// The advice of the last line.
 pub fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) -> String {
     let Some(i) = here else {
@@ -198,22 +197,16 @@ pub fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) ->
     let readme = format!("chapters/{}/README.md", chapter.folder);
     let command = format!("cargo test -p {}", chapter.package());
     let output = row.output.as_ref().expect("a failing row was run");
-    let mut open: Vec<_> = row.open_exercises().collect();
-    let order = lesson_order(root, chapter);
-    open.sort_by_key(|(_, _, r)| {
-        order
-            .iter()
-            .position(|id| *id == r.id)
-            .unwrap_or(usize::MAX)
-    });
+    let next = row.next_exercise(root);
     if let Some(error) = &output.compile_error {
         return format!(
             "next: chapter {} does not compile ({error}); run `{command}` to see the whole message",
             chapter.number()
         );
     }
-    // The first exercise not written yet, in the order the text derives them.
-    match open.first() {
+    // The exercise not written yet that the text asks for first (of those
+    // whose todo! a test met, if any did).
+    match next {
         Some((file, line, region)) => format!(
             "next: chapter {}: exercise {} in {}:{line}: {}\n      \
              read {readme}, write it, then run `{command}`",
@@ -223,7 +216,7 @@ pub fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) ->
             region.hint
         ),
         None => {
-            let what = match lead(output) {
+            let what = match lead(output, None) {
                 Lead::Told { test, message } => {
                     return format!(
                         "next: chapter {}: the test {test} fails:\n      {message}\n      \
@@ -354,6 +347,46 @@ mod tests {
         let row = text.lines().nth(1).unwrap();
         assert!(
             row.ends_with("  test the_lectures_worked_example"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn the_row_and_the_advice_speak_of_the_same_exercise_in_the_texts_order() {
+        // The light loop's test comes first in the chapter's order, but it
+        // ran into the Lambert exercise's todo!; the text asks for the spot
+        // first, and a later test ran into the spot's.
+        let root = tempfile::tempdir().unwrap();
+        let readme = root.path().join("chapters/03-lambert/README.md");
+        std::fs::create_dir_all(readme.parent().unwrap()).unwrap();
+        std::fs::write(
+            &readme,
+            "<!-- derives: ch03-spot -->\n<!-- derives: ch03-lambert -->\n",
+        )
+        .unwrap();
+        let open = "    // EXERCISE(ch03-lambert): l\n    todo!()\n    // END EXERCISE\n}\nfn g() {\n\
+                    // EXERCISE(ch03-spot): s\n    todo!()\n    // END EXERCISE\n";
+        let mut chapter = row("03-lambert", None, open);
+        chapter.output = Some(TestOutput {
+            failed: 2,
+            failed_tests: vec!["the_light_loop_adds".into(), "the_cone_edges".into()],
+            panics: vec![
+                (
+                    "the_light_loop_adds".into(),
+                    "not yet implemented: ch03-lambert: l".into(),
+                ),
+                (
+                    "the_cone_edges".into(),
+                    "not yet implemented: ch03-spot: s".into(),
+                ),
+            ],
+            ..TestOutput::default()
+        });
+        let text = report(&[chapter], root.path());
+        let row = text.lines().nth(1).unwrap();
+        assert!(row.ends_with("  test the_cone_edges"), "{text}");
+        assert!(
+            text.contains("next: chapter 3: exercise ch03-spot in"),
             "{text}"
         );
     }

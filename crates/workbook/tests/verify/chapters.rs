@@ -16,7 +16,12 @@ pub(crate) fn chapter(folder: &str) -> (Chapter, Explain) {
         "01-rays" => (ch01_rays::CHAPTER, ch01_rays::ray_tree::explain),
         // The default view, which is also the reference picture's `--view flat`.
         "02-hits" => (ch02_hits::CHAPTER, |scene, pixel| {
-            ch02_hits::ray_tree::explain(scene, ch02_hits::View::Flat, pixel)
+            ch02_hits::ray_tree::explain(
+                scene,
+                ch02_hits::View::Flat,
+                ch02_hits::Method::Lecture,
+                pixel,
+            )
         }),
         "03-lambert" => (ch03_lambert::CHAPTER, ch03_lambert::ray_tree::explain),
         "04-shadows" => (ch04_shadows::CHAPTER, |scene, pixel| {
