@@ -44,13 +44,16 @@ use ch00_toolkit as toolkit;
 use workbook::{handout, progress, regions, workspace};
 
 mod cargo;
+mod cgroup;
 mod class;
 mod confine;
 mod digest;
 mod mapping;
+mod outbound;
 mod outcomes;
 mod points;
 mod pool;
+mod reach;
 mod reference;
 mod report;
 mod result;
@@ -114,9 +117,22 @@ pub struct GradeArgs {
     #[arg(long, default_value_t = 900, value_name = "SECONDS")]
     pub build_timeout: u64,
 
-    /// Address space per process of a build or test run, in MiB.
+    /// Memory of a student's processes together (a control group, where
+    /// the system lets grading make one), and address space of each, in
+    /// MiB.
     #[arg(long, default_value_t = 4096, value_name = "MIB")]
     pub memory: u64,
+
+    /// Room for a student's build output (their copy's target folder, a
+    /// size-limited file system of its own), in MiB.
+    #[arg(long, default_value_t = 4096, value_name = "MIB")]
+    pub disk: u64,
+
+    /// Run the students' code WITHOUT the sandbox, as the teacher (only for
+    /// a class you trust, on a system without bubblewrap or user
+    /// namespaces). Every output says so.
+    #[arg(long)]
+    pub unsafe_no_sandbox: bool,
 
     /// What a build or test run may print, in MiB, before it is killed.
     #[arg(long, default_value_t = 16, value_name = "MIB")]
@@ -164,17 +180,7 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     let out = out.canonicalize().map_err(|e| e.to_string())?;
     let (class, names) = students(args)?;
     let settings = settings(args, &out, &class)?;
-    match confine::confinement() {
-        confine::Confinement::Full => {}
-        confine::Confinement::Network => eprintln!(
-            "note: the students' runs are offline, but may write outside their copies \
-             (no mount namespace here: see `unshare`, `setpriv`)"
-        ),
-        confine::Confinement::None => eprintln!(
-            "note: no namespaces here (unshare): the students' tests can reach the network \
-             and write outside their copies; cargo itself runs --offline"
-        ),
-    }
+    sandbox_setup(args)?;
     let start = Instant::now();
     let reference = Reference::prepare(&root, &settings, &|line| eprintln!("{line}"))?;
     let prepared = start.elapsed();
@@ -200,6 +206,29 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     );
     Ok(())
 }
+
+/// Starts the students' sandbox (or refuses to grade, saying why), and
+/// says what bounds a student.
+fn sandbox_setup(args: &GradeArgs) -> Result<(), String> {
+    let setup = confine::start(
+        !args.unsafe_no_sandbox,
+        args.disk << 20,
+        args.memory << 20,
+        PROCESSES,
+    )?;
+    if !setup.sandboxed {
+        eprintln!("WARNING: {}", confine::UNSANDBOXED);
+    } else if let Err(why) = &setup.cgroups {
+        eprintln!(
+            "note: no control group per student here ({why}): each process is held to \
+             --memory alone, and the number of processes only by the time limit"
+        );
+    }
+    Ok(())
+}
+
+/// Processes and threads a student may have at once (with a control group).
+const PROCESSES: u64 = 2048;
 
 /// The class folder and the student folders' names in it (for --one, the
 /// submission's parent and its name).
@@ -318,6 +347,9 @@ fn print_summary(
         took.as_secs_f64()
     );
     println!("reference: raybook {}", class.label());
+    if confine::unsandboxed() {
+        println!("WARNING: {}", confine::UNSANDBOXED);
+    }
     for path in written {
         println!("wrote {}", path.display());
     }
