@@ -115,24 +115,28 @@ impl Group {
         self.procs.clone()
     }
 
-    /// What the limits did, for the teacher: how often the memory limit
-    /// was reached.
+    /// What the limits did, for the teacher: processes the kernel ended
+    /// when the student's processes together reached the memory limit.
     pub fn notes(&self) -> Vec<String> {
-        let read = |file: &str| {
-            let path = self.folders.first()?.join(file);
-            std::fs::read_to_string(path)
-                .ok()?
-                .trim()
-                .parse::<u64>()
-                .ok()
+        let Some(memory) = self.folders.first() else {
+            return Vec::new();
         };
-        match (read("memory.failcnt"), read("memory.limit_in_bytes")) {
-            (Some(hits), Some(limit)) if hits > 0 => vec![format!(
-                "memory: the student's processes together reached their limit of {} MiB \
-                 ({hits} times); the kernel held them to it",
+        let read = |file: &str| std::fs::read_to_string(memory.join(file)).unwrap_or_default();
+        let killed = read("memory.oom_control")
+            .lines()
+            .find_map(|l| l.strip_prefix("oom_kill ")?.trim().parse::<u64>().ok())
+            .unwrap_or(0);
+        let limit = read("memory.limit_in_bytes")
+            .trim()
+            .parse::<u64>()
+            .unwrap_or(0);
+        match killed {
+            0 => Vec::new(),
+            n => vec![format!(
+                "memory: the student's processes together reached their limit of {} MiB; \
+                 the kernel ended {n} of them",
                 limit >> 20
             )],
-            _ => Vec::new(),
         }
     }
 }

@@ -146,9 +146,6 @@ fn check() -> Result<(), String> {
             (OsStr::new("sh"), &["-c".into(), script.into()]),
             &[("PATH".into(), "/usr/bin:/bin".into())],
         );
-        if std::env::var_os("RAYBOOK_SANDBOX_DEBUG").is_some() {
-            eprintln!("{command:?}");
-        }
         let out = command
             .stdin(Stdio::null())
             .output()
@@ -189,6 +186,9 @@ fn find_program(name: &str) -> Option<PathBuf> {
 pub struct Room {
     holder: Child,
     group: Option<Group>,
+    /// The folder it is mounted on, and its size in bytes.
+    dir: PathBuf,
+    size: u64,
 }
 
 impl Room {
@@ -230,7 +230,13 @@ impl Room {
             Ok(parent) => Some(parent.group(setup.memory, setup.pids)?),
             Err(_) => None,
         };
-        Ok(Room { holder, group })
+        let (dir, size) = (dir.to_owned(), setup.disk.max(1 << 20));
+        Ok(Room {
+            holder,
+            group,
+            dir,
+            size,
+        })
     }
 
     /// Where the grader finds `path` (a path of the run) from outside:
@@ -243,9 +249,19 @@ impl Room {
             .join(inside)
     }
 
-    /// What the student's limits did (the memory limit reached).
+    /// What the student's limits did: the memory limit reached, the build
+    /// folder full (less than 1% of it free).
     pub fn notes(&self) -> Vec<String> {
-        self.group.as_ref().map(Group::notes).unwrap_or_default()
+        let mut notes = self.group.as_ref().map(Group::notes).unwrap_or_default();
+        let free = free_bytes(&self.outside(&self.dir));
+        if free.is_some_and(|free| free < self.size / 100) {
+            notes.push(format!(
+                "disk: the student's runs filled their build folder ({} MiB); \
+                 writing more failed",
+                self.size >> 20
+            ));
+        }
+        notes
     }
 
     /// The group's `cgroup.procs` files.
@@ -259,6 +275,16 @@ impl Drop for Room {
         let _ = self.holder.kill();
         let _ = self.holder.wait();
     }
+}
+
+/// The free bytes of the file system at `dir`.
+fn free_bytes(dir: &Path) -> Option<u64> {
+    let name = CString::new(dir.as_os_str().as_encoded_bytes()).ok()?;
+    // SAFETY: statvfs is plain data, filled by the call.
+    let mut stat: libc::statvfs = unsafe { std::mem::zeroed() };
+    // SAFETY: a valid C string and a pointer to the struct above.
+    let done = unsafe { libc::statvfs(name.as_ptr(), &mut stat) };
+    (done == 0).then(|| stat.f_bavail as u64 * stat.f_frsize as u64)
 }
 
 /// The command that runs `program` with `args` and only `env`, in the
