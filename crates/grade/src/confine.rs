@@ -416,3 +416,55 @@ fn bwrap_args(copy: &Path, has_room: bool, env: &[(OsString, OsString)]) -> Vec<
     }
     args
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The arguments name every namespace, an empty root with the copy
+    /// read-only and its target writable, and never the cargo home's
+    /// credentials or the host's /tmp.
+    #[test]
+    fn the_sandbox_starts_empty_and_mounts_only_what_it_names() {
+        let copy = Path::new("/grading/work/alice");
+        let env = [("HOME".into(), "/grading/work/alice/target/scratch".into())];
+        let args: Vec<String> = bwrap_args(copy, true, &env)
+            .iter()
+            .map(|a| a.to_string_lossy().into_owned())
+            .collect();
+        let has = |words: &[&str]| args.windows(words.len()).any(|w| w == words);
+        for flag in [
+            "--unshare-all",
+            "--die-with-parent",
+            "--new-session",
+            "--clearenv",
+        ] {
+            assert!(has(&[flag]), "{flag}");
+        }
+        assert!(has(&[
+            "--ro-bind",
+            "/grading/work/alice",
+            "/grading/work/alice"
+        ]));
+        let target = "/grading/work/alice/target";
+        assert!(has(&["--bind", target, target]));
+        assert!(!has(&[
+            "--bind",
+            "/grading/work/alice",
+            "/grading/work/alice"
+        ]));
+        assert!(has(&["--size", "67108864", "--tmpfs", "/tmp"]));
+        assert!(!args.iter().any(|a| a.contains("credentials")));
+        assert!(!has(&["--bind", "/", "/"]) && !has(&["--ro-bind", "/", "/"]));
+        assert!(has(&[
+            "--setenv",
+            "HOME",
+            "/grading/work/alice/target/scratch"
+        ]));
+        // The reference's base copy (no room) is writable whole.
+        let base: Vec<OsString> = bwrap_args(copy, false, &[]);
+        let base: Vec<&OsStr> = base.iter().map(OsString::as_os_str).collect();
+        let bind = [OsStr::new("--bind"), copy.as_os_str(), copy.as_os_str()];
+        assert!(base.windows(3).any(|w| w == bind));
+    }
+}
