@@ -25,7 +25,7 @@
 //!   sources and Cargo files that the grading uses cannot be written while
 //!   the run lasts;
 //! * the copy's `target/`, writable: a tmpfs of its own, of a fixed size
-//!   (`--disk`), held by a small process per student (a *room*: a user and
+//!   (`--disk`), held by a small process per student (a *room*, `room.rs`: a user and
 //!   mount namespace made with `unshare`, whose tmpfs lives as long as the
 //!   student's grading and is entered with `nsenter` for each command). The
 //!   shared build artefacts are copies in it (`share.rs`), so nothing
@@ -46,14 +46,14 @@
 //! `--unsafe-no-sandbox` for a class they trust: the commands then run as
 //! the teacher, and every output says so.
 
-use std::ffi::{CString, OsStr, OsString};
-use std::io::{BufRead, BufReader};
+use std::ffi::{OsStr, OsString};
 use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 
-use super::cgroup::{self, Group, Parent};
+use super::cgroup::{self, Parent};
+pub use super::room::Room;
 
 /// What every output says of a student graded without the sandbox.
 pub const UNSANDBOXED: &str = "graded WITHOUT the sandbox (--unsafe-no-sandbox): the \
@@ -178,115 +178,6 @@ fn find_program(name: &str) -> Option<PathBuf> {
         .find(|p| p.is_file())
 }
 
-/// A student's writable build folder: a tmpfs of `--disk`'s size mounted
-/// on it in a user and mount namespace of its own, which a small process
-/// holds open for as long as the student is graded, and the student's
-/// control group. Both end when it is dropped.
-#[derive(Debug)]
-pub struct Room {
-    holder: Child,
-    group: Option<Group>,
-    /// The folder it is mounted on, and its size in bytes.
-    dir: PathBuf,
-    size: u64,
-}
-
-impl Room {
-    /// Mounts the room on `dir` (an empty folder).
-    pub fn new(dir: &Path) -> Result<Room, String> {
-        let setup = setup();
-        let script = "mount -t tmpfs -o \"size=$2,mode=0755\" raybook-room \"$1\" \
-                      && echo ready && exec cat";
-        let mut holder = Command::new("unshare")
-            .args([
-                "--user",
-                "--map-root-user",
-                "--mount",
-                "--",
-                "sh",
-                "-c",
-                script,
-                "sh",
-            ])
-            .arg(dir)
-            .arg(setup.disk.max(1 << 20).to_string())
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| format!("cannot run unshare: {e}"))?;
-        let mut line = String::new();
-        let stdout = holder.stdout.take().expect("piped");
-        let _ = BufReader::new(stdout).read_line(&mut line);
-        if line.trim() != "ready" {
-            let _ = holder.kill();
-            let output = holder.wait_with_output().map_err(|e| e.to_string())?;
-            return Err(format!(
-                "cannot make a user and mount namespace (unshare --user --mount): {}",
-                String::from_utf8_lossy(&output.stderr).trim()
-            ));
-        }
-        let group = match &setup.cgroups {
-            Ok(parent) => Some(parent.group(setup.memory, setup.pids)?),
-            Err(_) => None,
-        };
-        let (dir, size) = (dir.to_owned(), setup.disk.max(1 << 20));
-        Ok(Room {
-            holder,
-            group,
-            dir,
-            size,
-        })
-    }
-
-    /// Where the grader finds `path` (a path of the run) from outside:
-    /// through the holder's root.
-    pub fn outside(&self, path: &Path) -> PathBuf {
-        let inside = path.strip_prefix("/").unwrap_or(path);
-        Path::new("/proc")
-            .join(self.holder.id().to_string())
-            .join("root")
-            .join(inside)
-    }
-
-    /// What the student's limits did: the memory limit reached, the build
-    /// folder full (less than 1% of it free).
-    pub fn notes(&self) -> Vec<String> {
-        let mut notes = self.group.as_ref().map(Group::notes).unwrap_or_default();
-        let free = free_bytes(&self.outside(&self.dir));
-        if free.is_some_and(|free| free < self.size / 100) {
-            notes.push(format!(
-                "disk: the student's runs filled their build folder ({} MiB); \
-                 writing more failed",
-                self.size >> 20
-            ));
-        }
-        notes
-    }
-
-    /// The group's `cgroup.procs` files.
-    fn procs(&self) -> Vec<CString> {
-        self.group.as_ref().map(Group::procs).unwrap_or_default()
-    }
-}
-
-impl Drop for Room {
-    fn drop(&mut self) {
-        let _ = self.holder.kill();
-        let _ = self.holder.wait();
-    }
-}
-
-/// The free bytes of the file system at `dir`.
-fn free_bytes(dir: &Path) -> Option<u64> {
-    let name = CString::new(dir.as_os_str().as_encoded_bytes()).ok()?;
-    // SAFETY: statvfs is plain data, filled by the call.
-    let mut stat: libc::statvfs = unsafe { std::mem::zeroed() };
-    // SAFETY: a valid C string and a pointer to the struct above.
-    let done = unsafe { libc::statvfs(name.as_ptr(), &mut stat) };
-    (done == 0).then(|| stat.f_bavail as u64 * stat.f_frsize as u64)
-}
-
 /// The command that runs `program` with `args` and only `env`, in the
 /// folder `cwd` of `copy`: in the sandbox when grading is sandboxed, with
 /// `room` its writable build folder (none: the whole copy is writable, as
@@ -316,7 +207,7 @@ fn sandboxed(
     let mut command = match room {
         Some(room) => {
             let mut command = Command::new("nsenter");
-            command.arg("--target").arg(room.holder.id().to_string());
+            command.arg("--target").arg(room.id().to_string());
             command.args(["--user", "--mount", "--preserve-credentials", "--", "bwrap"]);
             command
         }

@@ -82,6 +82,7 @@ mod reach;
 mod reference;
 mod report;
 mod result;
+mod room;
 mod sandbox;
 mod share;
 mod student;
