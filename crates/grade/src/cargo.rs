@@ -7,8 +7,9 @@
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::Arc;
 
-use super::confine::confined;
+use super::confine::{Room, confined, setup};
 use workbench::exercise::TAKE_OUT;
 
 /// Where a build or test run works: the copy, its target folder, and a
@@ -18,6 +19,10 @@ pub struct Place {
     pub copy: PathBuf,
     pub target: PathBuf,
     pub scratch: PathBuf,
+    /// A student's writable, size-limited target folder (`confine.rs`);
+    /// none for the reference's base copy, which is all writable, and
+    /// when grading without the sandbox.
+    room: Option<Arc<Room>>,
 }
 
 impl Place {
@@ -27,7 +32,55 @@ impl Place {
             copy: copy.to_owned(),
             target: copy.join("target"),
             scratch: copy.join("target/scratch"),
+            room: None,
         }
+    }
+
+    /// The place of a student's copy: in the sandbox, the copy is
+    /// read-only and its target folder a room of its own (a tmpfs of
+    /// `--disk`'s size), which ends when the last clone of the place is
+    /// dropped.
+    pub fn student(copy: &Path) -> Result<Place, String> {
+        let mut place = Place::of(copy);
+        if setup().sandboxed {
+            std::fs::create_dir_all(&place.target)
+                .map_err(|e| format!("cannot create {}: {e}", place.target.display()))?;
+            place.room = Some(Arc::new(Room::new(&place.target)?));
+        }
+        Ok(place)
+    }
+
+    /// Where the grader reads or writes `path`, a path of the runs (in the
+    /// copy's target folder, which only the runs' namespace sees).
+    pub fn outside(&self, path: &Path) -> PathBuf {
+        match &self.room {
+            Some(room) => room.outside(path),
+            None => path.to_owned(),
+        }
+    }
+
+    /// What the student's limits did, for their result's notes.
+    pub fn notes(&self) -> Vec<String> {
+        self.room.as_ref().map(|r| r.notes()).unwrap_or_default()
+    }
+
+    /// `program` with `args` and the small environment (and `extra`), in
+    /// `cwd`, confined to this place.
+    fn command(
+        &self,
+        program: &OsString,
+        args: &[OsString],
+        (cwd, extra): (&Path, &[(OsString, OsString)]),
+    ) -> Command {
+        let _ = std::fs::create_dir_all(self.outside(&self.scratch));
+        let mut env = small_environment(self);
+        env.extend(extra.iter().cloned());
+        confined(
+            (&self.copy, cwd),
+            self.room.as_deref(),
+            (program, args),
+            &env,
+        )
     }
 }
 
@@ -35,61 +88,81 @@ impl Place {
 /// `--no-run` to build only), with `jobs` compiler processes at once.
 pub fn cargo_test(place: &Place, package: &str, build_only: bool, jobs: usize) -> Command {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    let mut command = confined(&cargo, &place.copy);
-    command.args(["test", "--offline", "--no-fail-fast", "--color", "never"]);
-    command.args(["-p", package, "--jobs", &jobs.max(1).to_string()]);
+    let mut args: Vec<OsString> = ["test", "--offline", "--no-fail-fast", "--color", "never"]
+        .map(OsString::from)
+        .to_vec();
+    args.extend(["-p".into(), package.into(), "--jobs".into()]);
+    args.push(jobs.max(1).to_string().into());
     if build_only {
-        command.args(["--no-run", "--message-format", "json-render-diagnostics"]);
+        let more = ["--no-run", "--message-format", "json-render-diagnostics"];
+        args.extend(more.map(OsString::from));
     }
-    command.current_dir(&place.copy);
-    small_environment(&mut command, place);
-    command
+    place.command(&cargo, &args, (&place.copy, &[]))
 }
 
 /// A test binary of the copy, run as cargo runs it (in its package's
 /// folder), with the exercises `take_out` taken out (see
 /// [`workbench::exercise`]).
 pub fn test_binary(place: &Place, binary: &Path, package_dir: &Path, take_out: &str) -> Command {
-    let mut command = confined(binary.as_os_str(), &place.copy);
-    command.current_dir(package_dir);
-    small_environment(&mut command, place);
-    command.env(TAKE_OUT, take_out);
-    command
+    let take_out = [(OsString::from(TAKE_OUT), OsString::from(take_out))];
+    place.command(
+        &binary.as_os_str().to_owned(),
+        &[],
+        (package_dir, &take_out),
+    )
 }
 
-/// Clears the environment and sets only what cargo and the tests need.
-fn small_environment(command: &mut Command, place: &Place) {
-    let _ = std::fs::create_dir_all(&place.scratch);
+/// Where rustup and cargo keep the toolchain and the registry: read-only
+/// in the sandbox.
+pub struct Homes {
+    pub cargo: Option<PathBuf>,
+    pub rustup: Option<PathBuf>,
+}
+
+/// The cargo and rustup homes (their variables, else under HOME).
+pub fn tool_homes() -> Homes {
     let home = std::env::var_os("HOME").map(PathBuf::from);
-    let under_home = |folder: &str| home.as_ref().map(|h| h.join(folder).into_os_string());
-    command.env_clear();
+    let find = |var: &str, folder: &str| {
+        std::env::var_os(var)
+            .map(PathBuf::from)
+            .or_else(|| home.as_ref().map(|h| h.join(folder)))
+    };
+    Homes {
+        cargo: find("CARGO_HOME", ".cargo"),
+        rustup: find("RUSTUP_HOME", ".rustup"),
+    }
+}
+
+/// Only what cargo and the tests need.
+fn small_environment(place: &Place) -> Vec<(OsString, OsString)> {
+    let mut env: Vec<(OsString, OsString)> = Vec::new();
     for var in ["PATH", "LANG", "LC_ALL", "RUSTUP_TOOLCHAIN", "RUSTC"] {
         if let Some(value) = std::env::var_os(var) {
-            command.env(var, value);
+            env.push((var.into(), value));
         }
     }
     // cargo and rustup find their homes under HOME: name them, so that
     // HOME can be the scratch folder.
-    let homes: [(&str, Option<OsString>); 2] = [
-        ("CARGO_HOME", under_home(".cargo")),
-        ("RUSTUP_HOME", under_home(".rustup")),
-    ];
-    for (var, default) in homes {
-        if let Some(value) = std::env::var_os(var).or(default) {
-            command.env(var, value);
+    let homes = tool_homes();
+    for (var, value) in [("CARGO_HOME", homes.cargo), ("RUSTUP_HOME", homes.rustup)] {
+        if let Some(value) = value {
+            env.push((var.into(), value.into()));
         }
     }
-    command
-        .env("HOME", &place.scratch)
-        .env("TMPDIR", &place.scratch)
-        .env("CARGO_TARGET_DIR", &place.target)
+    let set = [
+        ("HOME", place.scratch.as_os_str()),
+        ("TMPDIR", place.scratch.as_os_str()),
+        ("CARGO_TARGET_DIR", place.target.as_os_str()),
         // Incremental caches are large and are never reused here.
-        .env("CARGO_INCREMENTAL", "0")
-        .env("CARGO_TERM_COLOR", "never")
-        .env("CARGO_TERM_PROGRESS_WHEN", "never")
+        ("CARGO_INCREMENTAL", "0".as_ref()),
+        ("CARGO_TERM_COLOR", "never".as_ref()),
+        ("CARGO_TERM_PROGRESS_WHEN", "never".as_ref()),
         // A failing snapshot must not leave insta's .snap.new behind.
-        .env("INSTA_UPDATE", "no")
-        .env("RUST_BACKTRACE", "0");
+        ("INSTA_UPDATE", "no".as_ref()),
+        ("RUST_BACKTRACE", "0".as_ref()),
+    ];
+    env.extend(set.map(|(k, v)| (k.into(), v.to_owned())));
+    env
 }
 
 /// A test binary that `cargo test --no-run --message-format json` built.

@@ -1,147 +1,361 @@
-//! Confining a student's build and tests with Linux namespaces, where the
-//! system lets us make them (`unshare` and `setpriv` from util-linux, and
-//! user namespaces, which let an unprivileged teacher do it too):
+//! The sandbox of a student's build and tests: bubblewrap (`bwrap`).
 //!
-//! * a network namespace of their own: nothing to reach, not even by a test
-//!   that ignores `cargo --offline`;
-//! * a mount namespace in which every file system is read-only but their
-//!   copy (its sources, its target folder, its HOME and TMPDIR), with an
-//!   empty `/dev/shm` of their own: a test cannot delete or change the
-//!   teacher's files, the other students' copies or the reference's;
-//! * no capabilities and no way to gain any (`setpriv --no-new-privs`,
-//!   every capability dropped), so that they cannot undo the above: the
-//!   namespace's root may remount, its processes may not.
+//! Why bubblewrap: it is maintained (by the Flatpak and GNOME people,
+//! packaged by every distribution: Debian's `bubblewrap`), it is what
+//! Flatpak runs every desktop application in, so its set-up is well
+//! trodden; it needs no root (user namespaces let an unprivileged teacher
+//! make every namespace it asks for); and it starts from an *empty* root,
+//! into which only what is named is mounted, so that what we forget to
+//! hide is absent rather than exposed. nsjail does the same with a larger
+//! configuration language and is not packaged in Debian's main archive;
+//! Landlock only restricts file access, without a PID or network
+//! namespace, and needs a recent kernel.
 //!
-//! Where that cannot be made, the network namespace alone is tried, and
-//! then nothing (`grade` says which). Reading is not confined: a
-//! test can read any file the teacher can (but has no network to send it
-//! anywhere).
+//! Each command of a student runs in a fresh `bwrap` with every namespace
+//! of its own (`--unshare-all`: user, mount, PID, network, IPC, UTS,
+//! cgroup; `--disable-userns`, so that nothing inside makes more), a new
+//! session (no terminal to push keys into), `--die-with-parent`, and only
+//! the variables `cargo.rs` names (`--clearenv`). Its root is empty but
+//! for:
+//! * the toolchain, read-only: `/usr` and the `/lib*` and `/bin` links,
+//!   the few files of `/etc` a compiler and linker read, the rustup home,
+//!   and the cargo home's `bin/`, registry sources and configuration (not
+//!   its credentials);
+//! * the student's copy (`submission.rs`), read-only: the tests, snapshots,
+//!   sources and Cargo files that the grading uses cannot be written while
+//!   the run lasts;
+//! * the copy's `target/`, writable: a tmpfs of its own, of a fixed size
+//!   (`--disk`), held by a small process per student (a *room*, `room.rs`: a user and
+//!   mount namespace made with `unshare`, whose tmpfs lives as long as the
+//!   student's grading and is entered with `nsenter` for each command). The
+//!   shared build artefacts are copies in it (`share.rs`), so nothing
+//!   writable there is anyone else's;
+//! * a new `/proc`, a minimal `/dev`, and a small `/tmp`.
+//!
+//! Other students' copies, the reference's sources, the teacher's files,
+//! outputs and caches, the host's `/tmp` and `/run` (and their sockets) are
+//! not there; there is no network, not even the host's abstract sockets.
+//! In its PID namespace, every process of a command ends with it: when the
+//! command ends, or is killed at its time limit, the namespace's first
+//! process dies and the kernel kills the rest, `setsid` or not. The
+//! student's memory and processes together are bounded by a control group
+//! (`cgroup.rs`) where one can be made.
+//!
+//! Where the sandbox cannot start (no `bwrap`, user namespaces forbidden),
+//! grading refuses to start and says how to fix it. A teacher may pass
+//! `--unsafe-no-sandbox` for a class they trust: the commands then run as
+//! the teacher, and every output says so.
 
-use std::ffi::OsStr;
-use std::path::Path;
+use std::ffi::{OsStr, OsString};
+use std::os::unix::process::CommandExt;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 
-/// What a confined command gets, from the most confined.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Confinement {
-    /// Read-only file systems but its copy, no network, no capabilities.
-    Full,
-    /// No network.
-    Network,
-    /// Nothing: the system allows no namespace.
-    None,
+use super::cgroup::{self, Parent};
+pub use super::room::Room;
+
+/// What every output says of a student graded without the sandbox.
+pub const UNSANDBOXED: &str = "graded WITHOUT the sandbox (--unsafe-no-sandbox): the \
+     student's code ran as the teacher, with the teacher's files and network";
+
+/// How grading runs the students' commands.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    /// In bubblewrap (false: `--unsafe-no-sandbox`).
+    pub sandboxed: bool,
+    /// The size of a student's writable build folder, in bytes.
+    pub disk: u64,
+    /// The memory of a student's processes together, in bytes.
+    pub memory: u64,
+    /// The number of a student's processes (and threads) together.
+    pub pids: u64,
+    /// Where students' control groups are made, or why none can be.
+    pub cgroups: Result<Parent, String>,
 }
 
-/// Makes every mount read-only but `$1` (the copy, bound onto itself so
-/// that it is a mount of its own and stays writable), `/proc`, `/sys` and
-/// `/dev`; gives the run an empty `/dev/shm`; drops every capability and
-/// runs the rest of the arguments.
-const SCRIPT: &str = r#"set -e
-w="$1"; shift
-mount --bind "$w" "$w"
-while read -r _ _ _ _ m _; do
-  case "$m" in
-    /proc|/proc/*|/sys|/sys/*|/dev|/dev/pts|/dev/pts/*|"$w") ;;
-    *) mount -o remount,bind,ro "$m" 2>/dev/null || true ;;
-  esac
-done < /proc/self/mountinfo
-mount -t tmpfs -o size=64m tmpfs /dev/shm
-exec setpriv --no-new-privs --bounding-set=-all --inh-caps=-all -- "$@"
-"#;
+static SETUP: OnceLock<Setup> = OnceLock::new();
 
-/// The namespaces: new user (so that an unprivileged user may make the
-/// others), mount and network namespaces.
-const UNSHARE: [&str; 5] = ["--user", "--map-root-user", "--mount", "--net", "--"];
-
-/// A command that runs `program` confined (see the module), `writable`
-/// being the one folder it may write into.
-pub fn confined(program: &OsStr, writable: &Path) -> Command {
-    match confinement() {
-        Confinement::Full => {
-            let mut command = Command::new("unshare");
-            command.args(UNSHARE).args(["sh", "-c", SCRIPT, "sh"]);
-            command.arg(writable).arg(program);
-            command
-        }
-        Confinement::Network => {
-            let mut command = Command::new("unshare");
-            command.args(["--user", "--map-root-user", "--net", "--"]);
-            command.arg(program);
-            command
-        }
-        Confinement::None => Command::new(program),
-    }
+/// Was grading started without the sandbox (`--unsafe-no-sandbox`)?
+pub fn unsandboxed() -> bool {
+    SETUP.get().is_some_and(|s| !s.sandboxed)
 }
 
-/// What this system allows, found once by trying.
-pub fn confinement() -> Confinement {
-    static FOUND: OnceLock<Confinement> = OnceLock::new();
-    *FOUND.get_or_init(|| {
-        if full_works() {
-            Confinement::Full
-        } else if succeeds(
-            Command::new("unshare")
-                .args(["--user", "--map-root-user", "--net"])
-                .arg("true"),
-        ) {
-            Confinement::Network
-        } else {
-            Confinement::None
-        }
+/// The set-up chosen by [`start`]; unsandboxed if none was (unit tests).
+pub fn setup() -> &'static Setup {
+    SETUP.get_or_init(|| Setup {
+        sandboxed: false,
+        disk: 0,
+        memory: 0,
+        pids: 0,
+        cgroups: Err("not started".to_owned()),
     })
 }
 
-/// Does full confinement work: the writable folder writable, the rest not?
-fn full_works() -> bool {
-    let base = std::env::temp_dir().join(format!("raybook-confine-{}", std::process::id()));
-    let (dir, outside) = (base.join("writable"), base.join("not"));
-    if std::fs::create_dir_all(&dir).is_err() || std::fs::create_dir_all(&outside).is_err() {
-        return false;
+/// Chooses how the students' commands run, and checks that the sandbox
+/// starts (an error says why not and how to fix it). Once per process.
+pub fn start(sandboxed: bool, disk: u64, memory: u64, pids: u64) -> Result<&'static Setup, String> {
+    let cgroups = if sandboxed {
+        Parent::find()
+    } else {
+        Err("no sandbox".to_owned())
+    };
+    let setup = Setup {
+        sandboxed,
+        disk,
+        memory,
+        pids,
+        cgroups,
+    };
+    let chosen = SETUP.get_or_init(|| setup);
+    if chosen.sandboxed {
+        check().map_err(|why| {
+            format!(
+                "the students' sandbox cannot start: {why}\n\
+                 To fix it: install bubblewrap (`sudo apt-get install bubblewrap`) and allow \
+                 unprivileged user namespaces (`sudo sysctl kernel.unprivileged_userns_clone=1` \
+                 on Debian; on Ubuntu 23.10 and later also \
+                 `sudo sysctl kernel.apparmor_restrict_unprivileged_userns=0`; inside a \
+                 container, allow the unshare and mount system calls). For a class you trust, \
+                 `--unsafe-no-sandbox` grades without it, and every output says so."
+            )
+        })?;
     }
-    let test = format!(
-        "touch '{}/ok' && ! touch '{}/no' 2>/dev/null",
-        dir.display(),
-        outside.display()
-    );
-    let mut command = Command::new("unshare");
-    command.args(UNSHARE).args(["sh", "-c", SCRIPT, "sh"]);
-    command.arg(&dir).args(["sh", "-c", &test]);
-    let works = succeeds(&mut command) && dir.join("ok").exists();
-    let _ = std::fs::remove_dir_all(&base);
-    works
+    Ok(chosen)
 }
 
-fn succeeds(command: &mut Command) -> bool {
+/// Does a student's sandbox start here, and hold: its build folder
+/// writable, its copy and the rest not?
+fn check() -> Result<(), String> {
+    let bwrap = find_program("bwrap").ok_or("bwrap is not installed (no `bwrap` on PATH)")?;
+    let _ = bwrap;
+    for tool in ["unshare", "nsenter"] {
+        find_program(tool).ok_or(format!("`{tool}` (util-linux) is not on PATH"))?;
+    }
+    let dir = std::env::temp_dir().join(format!("raybook-sandbox-check-{}", std::process::id()));
+    let copy = dir.join("copy");
+    std::fs::create_dir_all(copy.join("target")).map_err(|e| e.to_string())?;
+    std::fs::write(dir.join("beside"), "not in the sandbox").map_err(|e| e.to_string())?;
+    let result = (|| {
+        let room = Room::new(&copy.join("target"))?;
+        let script = "echo ok > target/ok && ! (echo no > copy-file) 2>/dev/null \
+                      && ! test -e ../beside";
+        let mut command = sandboxed(
+            (&copy, &copy),
+            Some(&room),
+            (OsStr::new("sh"), &["-c".into(), script.into()]),
+            &[("PATH".into(), "/usr/bin:/bin".into())],
+        );
+        let out = command
+            .stdin(Stdio::null())
+            .output()
+            .map_err(|e| format!("cannot run bwrap: {e}"))?;
+        let wrote = std::fs::read_to_string(room.outside(&copy.join("target/ok")));
+        match (out.status.success(), wrote) {
+            (true, Ok(_)) => Ok(()),
+            (ran, wrote) => Err(format!(
+                "a trial run failed ({}{}): {}{}",
+                out.status,
+                if ran {
+                    "; its file not found from outside"
+                } else {
+                    ""
+                },
+                String::from_utf8_lossy(&out.stderr).trim(),
+                wrote.err().map(|e| format!(" ({e})")).unwrap_or_default()
+            )),
+        }
+    })();
+    let _ = std::fs::remove_dir_all(&dir);
+    result
+}
+
+/// The first `name` on PATH.
+fn find_program(name: &str) -> Option<PathBuf> {
+    let path = std::env::var_os("PATH")?;
+    std::env::split_paths(&path)
+        .map(|dir| dir.join(name))
+        .find(|p| p.is_file())
+}
+
+/// The command that runs `program` with `args` and only `env`, in the
+/// folder `cwd` of `copy`: in the sandbox when grading is sandboxed, with
+/// `room` its writable build folder (none: the whole copy is writable, as
+/// for the reference's own base copy); else plainly.
+pub fn confined(
+    (copy, cwd): (&Path, &Path),
+    room: Option<&Room>,
+    (program, args): (&OsStr, &[OsString]),
+    env: &[(OsString, OsString)],
+) -> Command {
+    if !setup().sandboxed {
+        let mut command = Command::new(program);
+        command.args(args).env_clear().envs(env.iter().cloned());
+        command.current_dir(cwd);
+        return command;
+    }
+    sandboxed((copy, cwd), room, (program, args), env)
+}
+
+/// [`confined`], in the sandbox.
+fn sandboxed(
+    (copy, cwd): (&Path, &Path),
+    room: Option<&Room>,
+    (program, args): (&OsStr, &[OsString]),
+    env: &[(OsString, OsString)],
+) -> Command {
+    let mut command = match room {
+        Some(room) => {
+            let mut command = Command::new("nsenter");
+            command.arg("--target").arg(room.id().to_string());
+            command.args(["--user", "--mount", "--preserve-credentials", "--", "bwrap"]);
+            command
+        }
+        None => Command::new("bwrap"),
+    };
+    command.args(bwrap_args(copy, room.is_some(), env));
+    command.arg("--chdir").arg(cwd);
+    command.arg("--").arg(program).args(args);
+    command.current_dir("/");
+    // bwrap's own environment is nobody's business; the run's is --setenv.
+    command.env_clear();
+    if let Ok(path) = std::env::var("PATH") {
+        command.env("PATH", path);
+    }
+    let procs = room.map(Room::procs).unwrap_or_default();
+    if !procs.is_empty() {
+        // SAFETY: only open, write and close (async-signal-safe) on
+        // strings made before the fork.
+        unsafe {
+            command.pre_exec(move || cgroup::enter(&procs));
+        }
+    }
     command
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .is_ok_and(|s| s.success())
+}
+
+/// The files of `/etc` a compiler, linker and shell read.
+const ETC: [&str; 8] = [
+    "alternatives",
+    "ld.so.cache",
+    "ld.so.conf",
+    "ld.so.conf.d",
+    "passwd",
+    "group",
+    "nsswitch.conf",
+    "localtime",
+];
+
+/// The parts of the cargo home a build reads (not `credentials.toml`).
+const CARGO_HOME: [&str; 5] = ["bin", "registry", "git", "config.toml", "config"];
+
+/// bwrap's arguments: the namespaces, the empty root and what is mounted
+/// in it, the environment.
+fn bwrap_args(copy: &Path, has_room: bool, env: &[(OsString, OsString)]) -> Vec<OsString> {
+    let mut args: Vec<OsString> = [
+        "--unshare-all",
+        "--unshare-user",
+        "--disable-userns",
+        "--die-with-parent",
+        "--new-session",
+        "--clearenv",
+        "--proc",
+        "/proc",
+        "--dev",
+        "/dev",
+        "--size",
+        "67108864",
+        "--tmpfs",
+        "/tmp",
+        "--ro-bind",
+        "/usr",
+        "/usr",
+    ]
+    .map(OsString::from)
+    .to_vec();
+    let mut bind = |how: &str, from: &Path, to: &Path| {
+        args.extend([how.into(), from.into(), to.into()]);
+    };
+    for top in ["bin", "sbin", "lib", "lib32", "lib64", "libx32"] {
+        let path = Path::new("/").join(top);
+        match std::fs::read_link(&path) {
+            Ok(to) => bind("--symlink", &to, &path),
+            Err(_) if path.is_dir() => bind("--ro-bind", &path, &path),
+            Err(_) => {}
+        }
+    }
+    for file in ETC {
+        let path = Path::new("/etc").join(file);
+        bind("--ro-bind-try", &path, &path);
+    }
+    let homes = super::cargo::tool_homes();
+    if let Some(cargo) = &homes.cargo {
+        for part in CARGO_HOME {
+            bind("--ro-bind-try", &cargo.join(part), &cargo.join(part));
+        }
+    }
+    if let Some(rustup) = &homes.rustup {
+        bind("--ro-bind-try", rustup, rustup);
+    }
+    if has_room {
+        bind("--ro-bind", copy, copy);
+        bind("--bind", &copy.join("target"), &copy.join("target"));
+    } else {
+        bind("--bind", copy, copy);
+    }
+    for (name, value) in env {
+        args.extend(["--setenv".into(), name.clone(), value.clone()]);
+    }
+    args
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// On a system that allows it (the CI machine does), a confined run
-    /// writes into its folder and nowhere else, and cannot remount.
+    /// The arguments name every namespace, an empty root with the copy
+    /// read-only and its target writable, and never the cargo home's
+    /// credentials or the host's /tmp.
     #[test]
-    fn a_confined_run_writes_only_into_its_folder() {
-        if confinement() != Confinement::Full {
-            eprintln!("no namespaces here: {:?}", confinement());
-            return;
+    fn the_sandbox_starts_empty_and_mounts_only_what_it_names() {
+        let copy = Path::new("/grading/work/alice");
+        let env = [("HOME".into(), "/grading/work/alice/target/scratch".into())];
+        let args: Vec<String> = bwrap_args(copy, true, &env)
+            .iter()
+            .map(|a| a.to_string_lossy().into_owned())
+            .collect();
+        let has = |words: &[&str]| args.windows(words.len()).any(|w| w == words);
+        for flag in [
+            "--unshare-all",
+            "--die-with-parent",
+            "--new-session",
+            "--clearenv",
+        ] {
+            assert!(has(&[flag]), "{flag}");
         }
-        let (dir, outside) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
-        let script = format!(
-            "touch '{0}/ok'; touch '{1}/no'; mount -o remount,rw / ; touch '{1}/after'; exit 0",
-            dir.path().display(),
-            outside.path().display()
-        );
-        let mut command = confined(OsStr::new("sh"), dir.path());
-        command.args(["-c", &script]);
-        assert!(succeeds(&mut command));
-        assert!(dir.path().join("ok").exists());
-        assert!(!outside.path().join("no").exists() && !outside.path().join("after").exists());
+        assert!(has(&[
+            "--ro-bind",
+            "/grading/work/alice",
+            "/grading/work/alice"
+        ]));
+        let target = "/grading/work/alice/target";
+        assert!(has(&["--bind", target, target]));
+        assert!(!has(&[
+            "--bind",
+            "/grading/work/alice",
+            "/grading/work/alice"
+        ]));
+        assert!(has(&["--size", "67108864", "--tmpfs", "/tmp"]));
+        assert!(!args.iter().any(|a| a.contains("credentials")));
+        assert!(!has(&["--bind", "/", "/"]) && !has(&["--ro-bind", "/", "/"]));
+        assert!(has(&[
+            "--setenv",
+            "HOME",
+            "/grading/work/alice/target/scratch"
+        ]));
+        // The reference's base copy (no room) is writable whole.
+        let base: Vec<OsString> = bwrap_args(copy, false, &[]);
+        let base: Vec<&OsStr> = base.iter().map(OsString::as_os_str).collect();
+        let bind = [OsStr::new("--bind"), copy.as_os_str(), copy.as_os_str()];
+        assert!(base.windows(3).any(|w| w == bind));
     }
 }

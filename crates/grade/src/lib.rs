@@ -13,47 +13,76 @@
 //! * the copy holds the reference's files but for the student's own
 //!   folders (each exercise chapter's `src/`): the tests, pictures,
 //!   manifest, Cargo files and lock file are the reference's, and no build
-//!   script of the student's is there; edits to them are flagged;
-//! * cargo runs `--offline`, with a small environment (HOME and TMPDIR in
-//!   the copy);
-//! * confined where the system allows it (`confine.rs`: Linux namespaces,
-//!   which user namespaces let an unprivileged teacher make): no network,
-//!   every file system read-only but the student's copy, a `/dev/shm` of
-//!   its own, no capabilities;
-//! * each build and each chapter's tests run in a process group of their
-//!   own, killed whole at the time limit, under limits on address space,
-//!   file size and core dumps, with a cap on what they print
-//!   (`sandbox.rs`); what stopped a run is recorded and the next one
-//!   starts; Ctrl-C ends them too;
-//! * each student builds in a target folder of their own, which shares
-//!   only what no student can change (`share.rs`).
+//!   script of the student's is there; edits to them are flagged, and so
+//!   are sources that reach outside their chapter (`#[path]`, `include!`
+//!   and its kin: `reach.rs`) and build settings among their sources;
+//! * every build and test run is in bubblewrap (`confine.rs`): an empty
+//!   root holding the toolchain and registry sources read-only, the copy
+//!   read-only, and its `target/` writable, a size-limited file system of
+//!   the student's own; every namespace its own (no network, no host
+//!   sockets, a PID namespace whose processes all end with the run); the
+//!   student's processes together in a control group bounding their
+//!   memory and number where the system allows one (`cgroup.rs`); cargo
+//!   `--offline`, with a small environment. Where the sandbox cannot
+//!   start, grading refuses to, unless the teacher says
+//!   `--unsafe-no-sandbox`, which every output then shows;
+//! * each run is killed at its time limit, under limits on address space,
+//!   file size and core dumps, with a cap on what it prints (`sandbox.rs`);
+//!   what stopped a run is recorded and the next one starts; Ctrl-C ends
+//!   them too;
+//! * the shared build artefacts are copies in the student's own target
+//!   folder, never links to the base build or the teacher's (`share.rs`);
+//! * what leaves the sandbox is checked: failure pictures are copied out
+//!   only if they are regular files, of a bounded size, read within a
+//!   time (`outbound.rs`); anything else in their place is refused and
+//!   flagged.
 //!
-//! What it does not contain: the tests run as the teacher's own user. They
-//! can read any file the teacher can (`include_str!("/home/…")` even at
-//! compile time), though with no network to send it anywhere; they share
-//! the machine's CPU time and processes (no cgroup: a fork bomb is limited
-//! only by the time limit); a process that leaves the group (`setsid`)
-//! outlives the time limit; the registry dependencies hard-linked into a
-//! student's target folder are the shared build's own files, which a test
-//! could overwrite in place. Without namespaces (another OS, or a system
-//! that forbids them), a test can also write anywhere the teacher can. For
-//! a class one does not trust, run `grade` itself inside a
-//! container or a throwaway account, as Gradescope does.
+//! What the design still trusts, and why that is acceptable:
+//! * the kernel and bubblewrap: a student who escapes a user namespace has
+//!   a kernel exploit, which no grader stops; bubblewrap is small, audited
+//!   and what every Flatpak application runs in, and distributions ship
+//!   its fixes. A teacher who grades strangers (a MOOC) should still run
+//!   `grade` in a throwaway virtual machine or account, as Gradescope does;
+//! * the toolchain and the registry sources, which the students' code may
+//!   read (they are public, and read-only in the sandbox), and rustc and
+//!   the linker, which run on the student's source: a compiler bug that
+//!   runs code at compile time runs it inside the same sandbox;
+//! * the students' own copies: within its run, a student's code may write
+//!   its own `target/` (its own build, its own failure pictures), so what
+//!   the tests print and write is theirs to forge. Points therefore must
+//!   not come from a student's own report of itself but from what its code
+//!   computed, judged outside the sandbox; the pictures leave only through
+//!   `outbound.rs`;
+//! * the CPU: nothing but the time limits bounds a student's CPU time, and
+//!   students graded side by side share the cores (a slow neighbour costs
+//!   time, never points, since no verdict depends on speed);
+//! * on cgroup v1 without a group the grader may make (an unprivileged
+//!   teacher), the memory of a student's processes is bounded one process
+//!   at a time (`--memory` of address space each) and their number only by
+//!   the time limit; grading says so when it starts. `cgroup.rs` says how
+//!   to bound them on a cgroup-v2 system;
+//! * with `--unsafe-no-sandbox`, everything: the code runs as the teacher,
+//!   reads and writes what the teacher can and reaches the network. It is
+//!   for a class one trusts, and every output says it was used.
 
 use ch00_toolkit as toolkit;
 use workbook::{handout, progress, regions, workspace};
 
 mod cargo;
+mod cgroup;
 mod class;
 mod confine;
 mod digest;
 mod mapping;
+mod outbound;
 mod outcomes;
 mod points;
 mod pool;
+mod reach;
 mod reference;
 mod report;
 mod result;
+mod room;
 mod sandbox;
 mod share;
 mod student;
@@ -114,9 +143,22 @@ pub struct GradeArgs {
     #[arg(long, default_value_t = 900, value_name = "SECONDS")]
     pub build_timeout: u64,
 
-    /// Address space per process of a build or test run, in MiB.
+    /// Memory of a student's processes together (a control group, where
+    /// the system lets grading make one), and address space of each, in
+    /// MiB.
     #[arg(long, default_value_t = 4096, value_name = "MIB")]
     pub memory: u64,
+
+    /// Room for a student's build output (their copy's target folder, a
+    /// size-limited file system of its own), in MiB.
+    #[arg(long, default_value_t = 4096, value_name = "MIB")]
+    pub disk: u64,
+
+    /// Run the students' code WITHOUT the sandbox, as the teacher (only for
+    /// a class you trust, on a system without bubblewrap or user
+    /// namespaces). Every output says so.
+    #[arg(long)]
+    pub unsafe_no_sandbox: bool,
 
     /// What a build or test run may print, in MiB, before it is killed.
     #[arg(long, default_value_t = 16, value_name = "MIB")]
@@ -164,17 +206,7 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     let out = out.canonicalize().map_err(|e| e.to_string())?;
     let (class, names) = students(args)?;
     let settings = settings(args, &out, &class)?;
-    match confine::confinement() {
-        confine::Confinement::Full => {}
-        confine::Confinement::Network => eprintln!(
-            "note: the students' runs are offline, but may write outside their copies \
-             (no mount namespace here: see `unshare`, `setpriv`)"
-        ),
-        confine::Confinement::None => eprintln!(
-            "note: no namespaces here (unshare): the students' tests can reach the network \
-             and write outside their copies; cargo itself runs --offline"
-        ),
-    }
+    sandbox_setup(args)?;
     let start = Instant::now();
     let reference = Reference::prepare(&root, &settings, &|line| eprintln!("{line}"))?;
     let prepared = start.elapsed();
@@ -200,6 +232,29 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     );
     Ok(())
 }
+
+/// Starts the students' sandbox (or refuses to grade, saying why), and
+/// says what bounds a student.
+fn sandbox_setup(args: &GradeArgs) -> Result<(), String> {
+    let setup = confine::start(
+        !args.unsafe_no_sandbox,
+        args.disk << 20,
+        args.memory << 20,
+        PROCESSES,
+    )?;
+    if !setup.sandboxed {
+        eprintln!("WARNING: {}", confine::UNSANDBOXED);
+    } else if let Err(why) = &setup.cgroups {
+        eprintln!(
+            "note: no control group per student here ({why}): each process is held to \
+             --memory alone, and the number of processes only by the time limit"
+        );
+    }
+    Ok(())
+}
+
+/// Processes and threads a student may have at once (with a control group).
+const PROCESSES: u64 = 2048;
 
 /// The class folder and the student folders' names in it (for --one, the
 /// submission's parent and its name).
@@ -318,6 +373,9 @@ fn print_summary(
         took.as_secs_f64()
     );
     println!("reference: raybook {}", class.label());
+    if confine::unsandboxed() {
+        println!("WARNING: {}", confine::UNSANDBOXED);
+    }
     for path in written {
         println!("wrote {}", path.display());
     }

@@ -227,10 +227,11 @@ fn write_if_changed(to: &Path, bytes: &[u8]) -> Result<(), String> {
     std::fs::write(to, bytes).map_err(|e| format!("cannot write {}: {e}", to.display()))
 }
 
-/// Before the first build of the base copy, its target folder gets the
-/// registry dependencies compiled already by the reference's own build and
-/// by the build this workbook comes from (cargo rebuilds any it does not
-/// find fresh). Best effort. The workspace's crates are left out: they are
+/// Before the first build of the base copy, its target folder gets copies
+/// of the registry dependencies compiled already by the reference's own
+/// build and by the build this workbook comes from (cargo rebuilds any it
+/// does not find fresh): copies, never links, so that nothing built later
+/// writes into the teacher's own target folder. Best effort. The workspace's crates are left out: they are
 /// built from the base copy's files.
 fn seed_dependencies(root: &Path, base: &Place, shared: &Shared) {
     if base.target.join("debug").exists() {
@@ -238,7 +239,7 @@ fn seed_dependencies(root: &Path, base: &Place, shared: &Shared) {
     }
     let registry = shared.registry_only();
     for target in seed_targets(root) {
-        let _ = registry.link(&target, &base.target);
+        let _ = registry.put(&target, &base.target);
     }
 }
 

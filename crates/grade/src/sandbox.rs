@@ -1,11 +1,14 @@
 //! Running a student's build and tests so that they cannot take the
-//! grading run down with them: in a process group of their own, killed
-//! whole at the time limit; with limits on memory (address space), on the
+//! grading run down with them: in a process group of their own (bwrap's,
+//! whose sandbox dies with it: `--die-with-parent` and its PID namespace
+//! end every process inside, `setsid` or not), killed whole at the time
+//! limit; with limits on each process's memory (address space), on the
 //! size of a file and on core dumps, set with `setrlimit` in the child
 //! before it starts; with a cap on what they print. (The small
-//! environment is `cargo.rs`'s; the namespaces, `confine.rs`'s.)
+//! environment is `cargo.rs`'s; the sandbox, the student's control group
+//! and size-limited build folder, `confine.rs`'s.)
 //!
-//! What this does not contain is said plainly in `grade/mod.rs`.
+//! What the design still trusts is said plainly in `lib.rs`.
 
 use std::io::Read;
 use std::os::unix::process::CommandExt;

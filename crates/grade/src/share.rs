@@ -10,7 +10,7 @@
 //! reference's base copy and put into each student's target folder before
 //! their build:
 //!
-//! * the registry dependencies (image, insta, clap, ...), hard-linked: their
+//! * the registry dependencies (image, insta, clap, ...), copied: their
 //!   artifacts are named by a hash of their version, features and flags,
 //!   which the students' builds reproduce exactly (same commands, same
 //!   environment), so cargo finds them fresh and never writes them again;
@@ -22,6 +22,14 @@
 //!   to find the snapshots and to write the failure pictures), so a shared
 //!   build would write every student's pictures into the base copy; it and
 //!   the chapters are built anew for each student.
+//!
+//! Every shared file is *copied* into the student's target folder (a room
+//! of its own in the sandbox, `confine.rs`), never hard-linked: a test
+//! that overwrites one in place changes its own copy only, never the base
+//! build that the next student's copy comes from, nor the teacher's own
+//! `target/`. The base build's folder itself is never in a student's
+//! sandbox. (A copy costs time and room per student: the registry
+//! dependencies of the chapters graded, a few hundred MiB.)
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -52,7 +60,7 @@ impl Names {
 /// What a student's target folder gets from the base build.
 #[derive(Debug, Clone, Default)]
 pub struct Shared {
-    /// The registry dependencies: hard-linked.
+    /// The registry dependencies: copied.
     registry: Names,
     /// The workspace crates no student can change: copied.
     workspace: Names,
@@ -84,25 +92,25 @@ impl Shared {
         }
     }
 
-    /// Puts the shared artifacts of the target folder `from` into `to`
+    /// Copies the shared artifacts of the target folder `from` into `to`
     /// (`debug/deps`, `debug/.fingerprint`, `debug/build`), where they are
-    /// not there already.
-    pub fn link(&self, from: &Path, to: &Path) -> Result<(), String> {
+    /// not there already. Never a link: see the module.
+    pub fn put(&self, from: &Path, to: &Path) -> Result<(), String> {
         let (from, to) = (from.join("debug"), to.join("debug"));
-        let put = |names: &Names, how: How| {
+        let put = |names: &Names| {
             let in_deps = |name: &str| stem(name).is_some_and(|s| names.crates.contains(s));
             let in_folders = |name: &str| {
                 name.rsplit_once('-')
                     .is_some_and(|(s, _)| names.packages.contains(s))
             };
-            put_matching(&from.join("deps"), &to.join("deps"), in_deps, how)?;
+            put_matching(&from.join("deps"), &to.join("deps"), in_deps)?;
             for folder in [".fingerprint", "build"] {
-                put_matching(&from.join(folder), &to.join(folder), in_folders, how)?;
+                put_matching(&from.join(folder), &to.join(folder), in_folders)?;
             }
             Ok::<(), std::io::Error>(())
         };
-        put(&self.registry, How::Link)
-            .and_then(|()| put(&self.workspace, How::Copy))
+        put(&self.registry)
+            .and_then(|()| put(&self.workspace))
             .map_err(|e| {
                 format!(
                     "cannot put the shared dependencies into {}: {e}",
@@ -169,16 +177,6 @@ fn names_its_paths(dir: &Path) -> bool {
     })
 }
 
-/// How a shared file is put into a student's target folder.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum How {
-    /// Hard-linked (copied if it cannot be).
-    Link,
-    /// Copied, with its modification time: cargo compares a crate's build
-    /// time with its dependencies'.
-    Copy,
-}
-
 /// The crate of a file of `deps/`: `lib<crate>-<hash>.<ext>` or
 /// `<crate>-<hash>.d`.
 fn stem(name: &str) -> Option<&str> {
@@ -186,14 +184,9 @@ fn stem(name: &str) -> Option<&str> {
     name.rsplit_once('-').map(|(stem, _)| stem)
 }
 
-/// Puts each entry of `from` whose name is chosen (folders with all they
+/// Copies each entry of `from` whose name is chosen (folders with all they
 /// hold) into `to`, unless it is there already.
-fn put_matching(
-    from: &Path,
-    to: &Path,
-    chosen: impl Fn(&str) -> bool,
-    how: How,
-) -> std::io::Result<()> {
+fn put_matching(from: &Path, to: &Path, chosen: impl Fn(&str) -> bool) -> std::io::Result<()> {
     let Ok(entries) = std::fs::read_dir(from) else {
         return Ok(());
     };
@@ -202,27 +195,37 @@ fn put_matching(
         let entry = entry?;
         let name = entry.file_name().to_string_lossy().into_owned();
         if chosen(&name) {
-            put_tree(&entry.path(), &to.join(&name), how)?;
+            put_tree(&entry.path(), &to.join(&name))?;
         }
     }
     Ok(())
 }
 
-/// Puts a file, or a folder's files, from `from` at `to`.
-fn put_tree(from: &Path, to: &Path, how: How) -> std::io::Result<()> {
-    if from.is_dir() {
+/// Copies a file, or a folder's files, from `from` to `to`, with their
+/// modification times (cargo compares a crate's build time with its
+/// dependencies'). A symlink is copied as a link (build scripts' outputs
+/// may hold one), never followed.
+fn put_tree(from: &Path, to: &Path) -> std::io::Result<()> {
+    let meta = std::fs::symlink_metadata(from)?;
+    if meta.is_dir() {
         std::fs::create_dir_all(to)?;
         for entry in std::fs::read_dir(from)? {
             let entry = entry?;
-            put_tree(&entry.path(), &to.join(entry.file_name()), how)?;
+            put_tree(&entry.path(), &to.join(entry.file_name()))?;
         }
-    } else if !to.exists() && (how == How::Copy || std::fs::hard_link(from, to).is_err()) {
+    } else if meta.is_symlink() {
+        if std::fs::symlink_metadata(to).is_err() {
+            std::os::unix::fs::symlink(std::fs::read_link(from)?, to)?;
+        }
+    } else if meta.is_file() && !to.exists() {
         copy_keeping_time(from, to)?;
     }
     Ok(())
 }
 
-/// Copies a file and gives the copy the original's modification time.
+/// Copies a file and gives the copy the original's modification time. A
+/// fresh file: never a link to the original (`std::fs::copy` writes a new
+/// inode).
 pub fn copy_keeping_time(from: &Path, to: &Path) -> std::io::Result<()> {
     std::fs::copy(from, to)?;
     let modified = std::fs::metadata(from)?.modified()?;
@@ -237,7 +240,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn only_the_chosen_crates_and_packages_are_linked() {
+    fn only_the_chosen_crates_and_packages_are_copied_never_linked() {
         let dir = tempfile::tempdir().unwrap();
         let (from, to) = (dir.path().join("from"), dir.path().join("to"));
         for file in [
@@ -260,8 +263,14 @@ mod tests {
             },
             workspace: Names::default(),
         };
-        shared.link(&from, &to).unwrap();
+        shared.put(&from, &to).unwrap();
         let has = |file: &str| to.join(file).exists();
+        // A copy, not a hard link: writing it leaves the base build as it was.
+        let rlib = "debug/deps/libimage-0123.rlib";
+        use std::os::unix::fs::MetadataExt;
+        assert_eq!(std::fs::metadata(to.join(rlib)).unwrap().nlink(), 1);
+        std::fs::write(to.join(rlib), "overwritten").unwrap();
+        assert_eq!(std::fs::read_to_string(from.join(rlib)).unwrap(), rlib);
         assert!(has("debug/deps/libimage-0123.rlib") && has("debug/deps/image-0123.d"));
         assert!(has("debug/.fingerprint/image-0123/lib-image"));
         assert!(has("debug/build/png-89ab/out/x"));

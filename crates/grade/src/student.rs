@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use super::cargo::{Place, cargo_test};
+use super::outbound;
 use super::outcomes::{Outcomes, name_of, outcomes};
 use super::reference::{Reference, Settings};
 use super::result::{ChapterRun, Picture, StudentResult, Verdict};
@@ -70,9 +71,8 @@ fn grade_in(
         .map(|(path, _)| path)
         .collect();
     let place = write_copy(reference, &submission.dir, &theirs, copy)?;
-    reference
-        .shared
-        .link(&reference.base.target, &place.target)?;
+    let target = place.outside(&place.target);
+    reference.shared.put(&reference.base.target, &target)?;
     let _ = std::fs::remove_dir_all(pictures);
     for chapter in &settings.chapters {
         let (mut chapter_run, found) = run_chapter(&place, chapter, settings)?;
@@ -84,9 +84,10 @@ fn grade_in(
             let missing = all.map(|t| t.iter().filter(|t| !found.0.contains_key(*t)).count());
             chapter_run.unfinished = missing.unwrap_or(0);
         }
-        chapter_run.pictures = keep_pictures(&place, chapter, pictures)?;
+        chapter_run.pictures = keep_pictures(&place, chapter, pictures, &mut result.flags)?;
         result.chapters.push(chapter_run);
     }
+    result.notes.extend(place.notes());
     Ok(())
 }
 
@@ -125,7 +126,7 @@ fn write_copy(
         copy_one(&dir.join(path), &copy.join(path), false)?;
     }
     let copy = copy.canonicalize().map_err(|e| e.to_string())?;
-    Ok(Place::of(&copy))
+    Place::student(&copy)
 }
 
 /// What one chapter's test run printed, read two ways.
@@ -239,16 +240,20 @@ fn judge(exercise: &super::mapping::ExerciseTests, run: &ChapterRun, found: &Fou
 /// Copies the chapter's failure pictures (the three-panel diffs the
 /// snapshot checks write into the copy's target/snapshot-failures/) into
 /// `pictures/<folder>/`; the list of them, relative to the report folder
-/// (`pictures`' parent).
+/// (`pictures`' parent). Only regular files leave (`outbound.rs`): what
+/// else stands in a picture's place is refused and `flags` say so.
 fn keep_pictures(
     place: &Place,
     chapter: &ChapterEntry,
     pictures: &Path,
+    flags: &mut Vec<String>,
 ) -> Result<Vec<Picture>, String> {
-    let failures = place
-        .copy
-        .join("target/snapshot-failures")
-        .join(&chapter.folder);
+    let failures = place.outside(
+        &place
+            .copy
+            .join("target/snapshot-failures")
+            .join(&chapter.folder),
+    );
     let Ok(entries) = std::fs::read_dir(&failures) else {
         return Ok(Vec::new());
     };
@@ -263,9 +268,15 @@ fn keep_pictures(
         let to = pictures
             .join(&chapter.folder)
             .join(format!("{name}.diff.png"));
-        std::fs::create_dir_all(to.parent().expect("a folder")).map_err(|e| e.to_string())?;
-        std::fs::copy(failures.join(format!("{name}.diff.png")), &to)
-            .map_err(|e| format!("cannot keep {}: {e}", to.display()))?;
+        let from = failures.join(format!("{name}.diff.png"));
+        let copied = outbound::copy_out(&from, &to, outbound::MAX_BYTES, outbound::MAX_TIME);
+        if let Err(why) = copied {
+            flags.push(format!(
+                "failure picture target/snapshot-failures/{}/{name}.diff.png: {why}",
+                chapter.folder
+            ));
+            continue;
+        }
         let diff = format!("{slug}/{}/{name}.diff.png", chapter.folder);
         kept.push(Picture {
             name,

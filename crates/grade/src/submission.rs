@@ -57,7 +57,10 @@ pub fn check(class: &Path, name: &str, reference: &Record) -> Result<Submission,
                 .to_owned(),
         );
     }
-    let warnings = version_warnings(&dir, reference)?;
+    let mut warnings = version_warnings(&dir, reference)?;
+    if super::confine::unsandboxed() {
+        warnings.push(super::confine::UNSANDBOXED.to_owned());
+    }
     Ok(Submission {
         name: name.to_owned(),
         dir,
@@ -153,10 +156,13 @@ pub fn ignore_rules(reference_root: &Path) -> Gitignore {
     builder.build().unwrap_or_else(|_| Gitignore::empty())
 }
 
-/// A hash of a student's files (names, contents, where symlinks lead): the
-/// same as at the last run means nothing changed.
+/// A hash of a student's files (names, contents, where symlinks lead), and
+/// of whether they are graded in the sandbox: the same as at the last run
+/// means nothing changed (and a result graded without the sandbox is never
+/// taken for one graded in it).
 pub fn hash_files(dir: &Path, files: &BTreeMap<PathBuf, Entry>) -> Result<String, String> {
     let mut hasher = Digest::default();
+    super::confine::unsandboxed().hash(&mut hasher);
     for (path, entry) in files {
         path.hash(&mut hasher);
         match entry {
@@ -204,6 +210,7 @@ pub fn changes(
     reference: &Reference,
 ) -> Result<Changes, String> {
     let mut changes = Changes::default();
+    let mut reaching = Vec::new();
     let mut note = |path: &Path, what: &str| {
         let line = format!("{what} {}", path.display());
         if is_protected(path) {
@@ -220,7 +227,11 @@ pub fn changes(
             );
             continue;
         }
-        if reference.is_students(path) || path == Path::new(RECORD_FILE) {
+        if reference.is_students(path) {
+            reaching.extend(reaching_out(dir, path)?);
+            continue;
+        }
+        if path == Path::new(RECORD_FILE) {
             continue;
         }
         match reference.file(path) {
@@ -234,7 +245,39 @@ pub fn changes(
             note(path, "removed");
         }
     }
+    changes.flags.extend(reaching);
     Ok(changes)
+}
+
+/// What one of the student's own files does to reach outside their folder
+/// (`reach.rs`), or a build setting among their sources (a `build.rs`, a
+/// Cargo file, a `.cargo/config`, a toolchain file: grading builds with
+/// the reference's, but someone tried).
+fn reaching_out(dir: &Path, path: &Path) -> Result<Vec<String>, String> {
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+    let setting = matches!(
+        name,
+        "build.rs" | "Cargo.toml" | "Cargo.lock" | "rust-toolchain" | "rust-toolchain.toml"
+    ) || path.components().any(|c| c.as_os_str() == ".cargo");
+    if setting {
+        return Ok(vec![format!(
+            "build setting among the student's sources: {} (not used: the build is the \
+             reference's)",
+            path.display()
+        )]);
+    }
+    if path.extension().is_none_or(|e| e != "rs") {
+        return Ok(Vec::new());
+    }
+    let bytes = std::fs::read(dir.join(path))
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    // The chapter's folder: its sources read its README and scenes.
+    let folder: PathBuf = path.components().take(2).collect();
+    Ok(super::reach::reaching(
+        &String::from_utf8_lossy(&bytes),
+        path,
+        &folder,
+    ))
 }
 
 /// Do the student's file and the reference's hold the same bytes? Sizes
@@ -260,7 +303,7 @@ pub fn is_protected(path: &Path) -> bool {
             name,
             "Cargo.toml" | "Cargo.lock" | "build.rs" | "rust-toolchain" | "rust-toolchain.toml"
         )
-        || path.starts_with(".cargo")
+        || path.components().any(|c| c.as_os_str() == ".cargo")
 }
 
 #[cfg(test)]
@@ -323,6 +366,7 @@ mod tests {
             "chapters/01-rays/Cargo.toml",
             "chapters/01-rays/build.rs",
             ".cargo/config.toml",
+            "chapters/01-rays/.cargo/config",
         ] {
             assert!(is_protected(Path::new(protected)), "{protected}");
         }

@@ -85,10 +85,12 @@ fn line(cells: &[String]) -> String {
 }
 
 /// A field, quoted (quotes doubled) if it holds a comma, a quote or a line
-/// break; a leading `=`, `+`, `-` or `@` is prefixed with `'`, so that a
-/// spreadsheet never runs a student's folder name as a formula.
+/// break; a leading `=`, `+`, `-`, `@`, tab or carriage return is prefixed
+/// with `'`, so that a spreadsheet never runs a student's folder name as a
+/// formula (some strip a leading tab or carriage return, then read what
+/// follows as one: OWASP's "CSV injection").
 fn field(cell: &str) -> String {
-    let cell = if cell.starts_with(['=', '+', '-', '@']) {
+    let cell = if cell.starts_with(['=', '+', '-', '@', '\t', '\r']) {
         format!("'{cell}")
     } else {
         cell.to_owned()
@@ -111,5 +113,8 @@ mod tests {
         assert_eq!(field("say \"hi\""), "\"say \"\"hi\"\"\"");
         assert_eq!(field("=SUM(A1)"), "'=SUM(A1)");
         assert_eq!(line(&["a".into(), "b\nc".into()]), "a,\"b\nc\"\r\n");
+        assert_eq!(field("\t=1+2"), "'\t=1+2");
+        assert_eq!(field("\r=cmd"), "\"'\r=cmd\"");
+        assert_eq!(field("a\tb"), "a\tb", "a tab inside is left alone");
     }
 }

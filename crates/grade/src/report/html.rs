@@ -43,6 +43,13 @@ pub fn write_report(dir: &Path, class: &Class) -> Result<PathBuf, String> {
                 .join(", ")
         )
     );
+    let unsandboxed = class.students.iter().flat_map(|s| &s.warnings);
+    if let Some(warning) = unsandboxed
+        .into_iter()
+        .find(|w| *w == crate::confine::UNSANDBOXED)
+    {
+        let _ = writeln!(html, "<p class=\"flag\">WARNING: {}.</p>", escape(warning));
+    }
     html.push_str(&table(class));
     for student in class.students {
         html.push_str(&section(class, student, &pictures));

@@ -47,10 +47,12 @@ fn suite(class: &Class, student: &StudentResult) -> String {
         "    <properties>\n      <property name=\"reference\" value=\"{}\"/>\n",
         escape(&class.label())
     ));
-    for flag in &student.flags {
+    let named = (student.flags.iter().map(|f| ("flag", f)))
+        .chain(student.warnings.iter().map(|w| ("warning", w)));
+    for (name, value) in named {
         xml.push_str(&format!(
-            "      <property name=\"flag\" value=\"{}\"/>\n",
-            escape(flag)
+            "      <property name=\"{name}\" value=\"{}\"/>\n",
+            escape(value)
         ));
     }
     xml.push_str("    </properties>\n");

@@ -1,0 +1,445 @@
+//! `grade` against a class of hostile submissions (issue 35): one test per
+//! attack kind that the sandbox, the copies and the checks stop, on one
+//! graded class (chapter 1 only, to keep CI's time):
+//!
+//! | folder       | honest work | what it tries                                          | expected row             |
+//! |--------------|-------------|--------------------------------------------------------|--------------------------|
+//! | `a-runtime`  | chapter 1   | a `setsid` child; Unix sockets outside; overwriting the shared artefacts in place (its own, the base build's, the teacher's); a symlink and a FIFO as failure pictures | 3/3, the pictures refused and flagged |
+//! | `b-reacher`  | none        | `#[path = "/…"]` to the reference's solution, `include_str!` of another student's file | 0/3 (does not compile), flagged |
+//! | `c-hogs`     | none        | files together over its disk; six children together over its memory | 0/3, both limits noted |
+//! | `\t=SUM(1)`  | chapter 1   | its name: a CSV cell that begins with a tab              | 3/3, the cell neutralised |
+//! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
+//!
+//! Nothing outside the students' copies may change: the reference, the
+//! class's folders, the base build and the grading cache, the teacher's own
+//! `target/` (a canary in it), checked before and after. No process of a
+//! student outlives the run, and the sockets outside hear nothing.
+//!
+//! It needs the sandbox (bubblewrap, user namespaces): where it cannot
+//! start, grading refuses and these tests fail. It takes minutes, so it
+//! runs only when asked, as CI does:
+//!
+//! ```text
+//! RAYBOOK_GRADE_HOSTILE=1 cargo test -p grade --test hostile -- --nocapture
+//! ```
+
+mod grade_support;
+
+use std::collections::BTreeMap;
+use std::os::unix::fs::MetadataExt;
+use std::os::unix::net::UnixListener;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::{Arc, Mutex, OnceLock};
+use std::time::Instant;
+
+use grade_support::{Row, class_fingerprint, handout, read_csv, snapshot_reference};
+
+/// The attacker's code (`at` calls it once per process).
+const RUNTIME: &str = include_str!("hostile_corpus/runtime.rs");
+
+/// What the graded class left: its rows, what grading printed, and the
+/// checks made around it.
+struct Graded {
+    rows: BTreeMap<String, Row>,
+    csv: String,
+    printed: String,
+    /// Fingerprints that must not change: (what, before, after).
+    unchanged: Vec<(&'static str, Vec<String>, Vec<String>)>,
+    /// What the sockets outside heard.
+    heard: Vec<String>,
+    /// Processes still running with the survivor's mark.
+    survivors: Vec<String>,
+    /// The secret the symlinked picture led to, and the report folder.
+    secret: String,
+    report: PathBuf,
+}
+
+/// The class, graded once for all the tests (None: not asked for).
+fn graded() -> Option<&'static Graded> {
+    static GRADED: OnceLock<Graded> = OnceLock::new();
+    if std::env::var_os("RAYBOOK_GRADE_HOSTILE").is_none() {
+        eprintln!("hostile: set RAYBOOK_GRADE_HOSTILE=1 to grade the hostile class (minutes)");
+        return None;
+    }
+    Some(GRADED.get_or_init(grade_the_class))
+}
+
+/// `grade CLASS --chapters 1` with this test's reference and output.
+fn grade(reference: &Path, out: &Path, class: &Path) -> String {
+    let run = Command::new(env!("CARGO_BIN_EXE_grade"))
+        .arg(class)
+        .arg("--reference")
+        .arg(reference)
+        .arg("--out")
+        .arg(out)
+        .args(["--chapters", "1", "--memory", "3072", "--disk", "1024"])
+        .args(["--timeout", "180"])
+        .output()
+        .unwrap();
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(run.status.success(), "grade failed:\n{text}");
+    text
+}
+
+fn grade_the_class() -> Graded {
+    let start = Instant::now();
+    let base = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("grade-hostile");
+    // Everything of a last run goes but the reference's base build (kept
+    // for the same reference: a rerun on a maintainer's machine skips it).
+    let (class, out) = (base.join("class"), base.join("out"));
+    let kept = base.with_file_name("grade-hostile-kept");
+    let _ = std::fs::rename(out.join(".cache"), &kept);
+    let _ = std::fs::remove_dir_all(&base);
+    let reference = snapshot_reference(&base.join("reference"));
+    if kept.exists() {
+        std::fs::create_dir_all(&out).unwrap();
+        let _ = std::fs::remove_dir_all(kept.join("students"));
+        let _ = std::fs::remove_dir_all(kept.join("work"));
+        std::fs::rename(&kept, out.join(".cache")).unwrap();
+    }
+    // The base build first (an empty class), so that what it made can be
+    // checked before and after the students.
+    std::fs::create_dir_all(base.join("nobody")).unwrap();
+    grade(&reference, &out, &base.join("nobody"));
+    eprintln!("reference prepared: {:.0?}", start.elapsed());
+
+    let teacher_deps = Path::new(env!("CARGO_BIN_EXE_grade"))
+        .parent()
+        .unwrap()
+        .join("deps");
+    std::fs::write(teacher_deps.join("raybook-hostile-canary"), "the teacher's").unwrap();
+    let secret = format!("a secret of the teacher's, {}", std::process::id());
+    std::fs::write(base.join("secret.txt"), &secret).unwrap();
+    let (heard, socket, abstract_name) = listen(&base);
+    let places = [
+        ("@SOCKET@", socket.display().to_string()),
+        ("@ABSTRACT@", abstract_name),
+        (
+            "@BASE_DEPS@",
+            out.join(".cache/base/target/debug/deps")
+                .display()
+                .to_string(),
+        ),
+        ("@TEACHER_DEPS@", teacher_deps.display().to_string()),
+        ("@SECRET@", base.join("secret.txt").display().to_string()),
+    ];
+    make_class(&reference, &class, &places);
+
+    let watched: Vec<(&'static str, PathBuf)> = vec![
+        ("the reference", reference.clone()),
+        ("the class", class.clone()),
+        ("the base build", out.join(".cache/base/target/debug/deps")),
+        ("the base copy's sources", out.join(".cache/base/chapters")),
+    ];
+    let before: Vec<Vec<String>> = watched.iter().map(|(_, p)| class_fingerprint(p)).collect();
+    let teacher_before = shallow_fingerprint(&teacher_deps);
+    let start = Instant::now();
+    let printed = grade(&reference, &out, &class);
+    eprintln!(
+        "the hostile class graded: {:.0?}\n{printed}",
+        start.elapsed()
+    );
+    let mut unchanged: Vec<_> = watched
+        .iter()
+        .zip(before)
+        .map(|((what, path), before)| (*what, before, class_fingerprint(path)))
+        .collect();
+    unchanged.push((
+        "the teacher's target/debug/deps",
+        teacher_before,
+        shallow_fingerprint(&teacher_deps),
+    ));
+    let csv = std::fs::read_to_string(out.join("grades.csv")).unwrap();
+    eprintln!("grades.csv:\n{csv}");
+    Graded {
+        rows: read_csv(&out.join("grades.csv")),
+        csv,
+        printed,
+        unchanged,
+        heard: heard.lock().unwrap().clone(),
+        survivors: survivors(),
+        secret,
+        report: out.join("report"),
+    }
+}
+
+/// Listens on a Unix socket at a path outside the class and on an abstract
+/// name: what they hear, the path and the name.
+fn listen(base: &Path) -> (Arc<Mutex<Vec<String>>>, PathBuf, String) {
+    use std::io::Read;
+    use std::os::linux::net::SocketAddrExt;
+    let heard = Arc::new(Mutex::new(Vec::new()));
+    let path = base.join("outside.sock");
+    let name = format!("raybook-hostile-{}", std::process::id());
+    let address = std::os::unix::net::SocketAddr::from_abstract_name(name.as_bytes()).unwrap();
+    for listener in [
+        UnixListener::bind(&path).unwrap(),
+        UnixListener::bind_addr(&address).unwrap(),
+    ] {
+        let heard = Arc::clone(&heard);
+        std::thread::spawn(move || {
+            for stream in listener.incoming().flatten() {
+                let mut text = String::new();
+                let _ = (&stream).read_to_string(&mut text);
+                heard.lock().unwrap().push(text);
+            }
+        });
+    }
+    (heard, path, name)
+}
+
+/// Every file of a folder (not its subfolders): name, size, time, inode;
+/// but the grade crate's own, which a build of these tests beside them
+/// may rewrite.
+fn shallow_fingerprint(dir: &Path) -> Vec<String> {
+    let mut found: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .flatten()
+        .filter_map(|e| {
+            let meta = e.metadata().ok()?;
+            let name = e.file_name().to_string_lossy().into_owned();
+            if name.starts_with("grade-") || name.starts_with("libgrade-") {
+                return None;
+            }
+            Some(format!(
+                "{name} {} {} {} {}",
+                meta.len(),
+                meta.mtime(),
+                meta.mtime_nsec(),
+                meta.ino()
+            ))
+        })
+        .collect();
+    found.sort();
+    found
+}
+
+/// The processes whose command line holds the survivor's mark.
+fn survivors() -> Vec<String> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir("/proc").unwrap().flatten() {
+        let cmdline = std::fs::read(entry.path().join("cmdline")).unwrap_or_default();
+        let cmdline = String::from_utf8_lossy(&cmdline).replace('\0', " ");
+        if cmdline.contains("987654") {
+            found.push(cmdline);
+        }
+    }
+    found
+}
+
+/// The student folders.
+fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
+    std::fs::create_dir_all(class).unwrap();
+    let student = |name: &str, solved: u32| {
+        let dir = class.join(name);
+        handout(reference, &dir, solved);
+        dir
+    };
+    let attacker = |dir: &Path, kind: &str, keep: bool| {
+        let mut code = RUNTIME.replace("@KIND@", kind);
+        for (name, value) in places {
+            code = code.replace(name, value);
+        }
+        std::fs::write(dir.join("chapters/01-rays/src/hostile.rs"), code).unwrap();
+        let lib = dir.join("chapters/01-rays/src/lib.rs");
+        let source = std::fs::read_to_string(&lib).unwrap();
+        let body = |r: &workbook::regions::Region| {
+            let rest = if keep {
+                "self.origin + t * self.direction"
+            } else {
+                "todo!()"
+            };
+            (r.id == "ch01-at").then(|| {
+                format!(
+                    "        static ONCE: std::sync::Once = std::sync::Once::new();\n        \
+                     ONCE.call_once(crate::hostile::attack);\n        {rest}"
+                )
+            })
+        };
+        let source = workbook::regions::replace_bodies(&source, body).unwrap();
+        std::fs::write(&lib, format!("{source}\nmod hostile;\n")).unwrap();
+    };
+    attacker(&student("a-runtime", 1), "runtime", true);
+    attacker(&student("c-hogs", 0), "hogs", false);
+
+    let reacher = student("b-reacher", 0);
+    let lib = reacher.join("chapters/01-rays/src/lib.rs");
+    let other = class.join("zz-honest/chapters/01-rays/src/lib.rs");
+    let solution = reference.join("chapters/01-rays/src/lib.rs");
+    let mut source = std::fs::read_to_string(&lib).unwrap();
+    source.push_str(&format!(
+        "\n#[path = {:?}]\nmod answer;\npub const CLASSMATE: &str = include_str!({:?});\n",
+        solution.display().to_string(),
+        other.display().to_string()
+    ));
+    std::fs::write(&lib, source).unwrap();
+
+    student("\t=SUM(1)", 1);
+    student("zz-honest", 1);
+}
+
+/// The row of a student.
+fn row(name: &str) -> Option<&'static Row> {
+    Some(&graded()?.rows[name])
+}
+
+/// The row's flags, less the one every handout has today: a handout's
+/// Cargo.lock still names the grade crate, which the reference's base copy
+/// (without it) has dropped from its own.
+fn flags(row: &Row) -> Vec<&str> {
+    row["flags"]
+        .split("; ")
+        .filter(|f| !f.is_empty() && *f != "edited Cargo.lock")
+        .collect()
+}
+
+fn score(row: &Row) -> (&str, &str) {
+    (row["score"].as_str(), row["max_score"].as_str())
+}
+
+#[test]
+fn nothing_outside_the_students_copies_changes() {
+    let Some(graded) = graded() else { return };
+    for (what, before, after) in &graded.unchanged {
+        assert!(!before.is_empty(), "{what}: nothing to compare");
+        let changed: Vec<_> = after.iter().filter(|a| !before.contains(a)).collect();
+        assert_eq!(before, after, "{what} changed: {changed:?}");
+    }
+}
+
+#[test]
+fn honest_students_get_exactly_their_points_and_no_flag() {
+    let Some(honest) = row("zz-honest") else {
+        return;
+    };
+    assert_eq!(score(honest), ("3", "3"), "{honest:?}");
+    assert!(flags(honest).is_empty(), "{honest:?}");
+    assert_eq!(honest["troubles"], "", "{honest:?}");
+}
+
+#[test]
+fn a_setsid_child_dies_with_the_run() {
+    let Some(graded) = graded() else { return };
+    assert!(graded.survivors.is_empty(), "{:?}", graded.survivors);
+    assert_eq!(score(&graded.rows["a-runtime"]), ("3", "3"));
+}
+
+#[test]
+fn a_unix_socket_reaches_no_process_outside() {
+    let Some(graded) = graded() else { return };
+    assert!(graded.heard.is_empty(), "heard {:?}", graded.heard);
+}
+
+#[test]
+fn overwriting_shared_artefacts_in_place_harms_no_one_else() {
+    let Some(graded) = graded() else { return };
+    // The base build and the teacher's target: `nothing_outside…`. Here:
+    // the classmate graded after builds and scores as if nothing happened.
+    let honest = &graded.rows["zz-honest"];
+    assert_eq!(
+        (score(honest), honest["compiled"].as_str()),
+        (("3", "3"), "yes")
+    );
+    let canary = Path::new(env!("CARGO_BIN_EXE_grade"))
+        .parent()
+        .unwrap()
+        .join("deps/raybook-hostile-canary");
+    assert_eq!(std::fs::read_to_string(canary).unwrap(), "the teacher's");
+}
+
+#[test]
+fn a_symlink_or_a_fifo_as_a_failure_picture_is_refused_and_noted() {
+    let Some(graded) = graded() else { return };
+    let attacker = &graded.rows["a-runtime"];
+    let flags = flags(attacker);
+    let leak = flags.iter().find(|f| f.contains("leak.diff.png"));
+    assert!(leak.is_some_and(|f| f.contains("a symlink")), "{flags:?}");
+    let block = flags.iter().find(|f| f.contains("block.diff.png"));
+    assert!(block.is_some_and(|f| f.contains("a FIFO")), "{flags:?}");
+    // Nothing of the secret reached the report.
+    for entry in walk(&graded.report) {
+        let bytes = std::fs::read(&entry).unwrap_or_default();
+        let text = String::from_utf8_lossy(&bytes);
+        assert!(
+            !text.contains(&graded.secret),
+            "{} leaks it",
+            entry.display()
+        );
+    }
+}
+
+#[test]
+fn paths_and_includes_outside_the_folder_read_nothing_and_are_flagged() {
+    let Some(reacher) = row("b-reacher") else {
+        return;
+    };
+    assert_eq!(score(reacher), ("0", "3"), "{reacher:?}");
+    assert_eq!(
+        reacher["compiled"], "no",
+        "the files are not in its sandbox"
+    );
+    let flags = flags(reacher);
+    assert!(
+        flags
+            .iter()
+            .any(|f| f.contains("#[path] reaches outside") && f.contains("an absolute path")),
+        "{flags:?}"
+    );
+    assert!(
+        flags
+            .iter()
+            .any(|f| f.contains("include_str! reaches outside")),
+        "{flags:?}"
+    );
+}
+
+#[test]
+fn children_together_over_the_memory_and_files_over_the_disk_are_held() {
+    let Some(graded) = graded() else { return };
+    let hogs = &graded.rows["c-hogs"];
+    assert_eq!(score(hogs), ("0", "3"), "{hogs:?}");
+    let report = std::fs::read_to_string(graded.report.join("index.html")).unwrap();
+    assert!(
+        report.contains("runs filled their build folder (1024 MiB)"),
+        "the disk limit is noted"
+    );
+    // A control group per student where the system allows one (as root on
+    // cgroup v1, or delegated): then the memory limit held them together.
+    if !graded.printed.contains("no control group per student") {
+        assert!(
+            report.contains("the kernel ended"),
+            "the memory limit is noted"
+        );
+    }
+}
+
+#[test]
+fn a_csv_cell_that_begins_with_a_tab_is_neutralised() {
+    let Some(graded) = graded() else { return };
+    assert!(graded.csv.contains("'\t=SUM(1)"), "{}", graded.csv);
+    let cells = graded.csv.split([',', '\n']);
+    assert!(cells.clone().all(|c| !c.starts_with('\t')));
+    assert_eq!(score(&graded.rows["'\t=SUM(1)"]), ("3", "3"));
+}
+
+/// Every file under `dir`.
+fn walk(dir: &Path) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    let mut folders = vec![dir.to_owned()];
+    while let Some(folder) = folders.pop() {
+        for entry in std::fs::read_dir(folder).into_iter().flatten().flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                folders.push(path);
+            } else {
+                files.push(path);
+            }
+        }
+    }
+    files
+}
