@@ -247,3 +247,78 @@ pub fn tampered(copy: &Path, reference: &Reference) -> Vec<String> {
     }
     changed
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn verdict(id: &str, passed: bool) -> Verdict {
+        Verdict {
+            id: id.to_owned(),
+            passed,
+            judged_by: JUDGED_BY_VALUES.to_owned(),
+            ..Verdict::default()
+        }
+    }
+
+    fn picture(uses: &[&str], shade: u8) -> Picture {
+        Picture {
+            name: "03-lambert seeded scene 1".to_owned(),
+            uses: uses.iter().map(|s| s.to_string()).collect(),
+            width: 8,
+            height: 8,
+            rgb: vec![shade; 8 * 8 * 3],
+        }
+    }
+
+    #[test]
+    fn a_differing_scene_costs_its_exercises_unless_one_drawing_it_lost_already() {
+        let uses = ["ch02-closest", "ch03-lambert", "ch03-spot"];
+        let ours = [picture(&uses, 100)];
+        let differs = || Ok(vec![picture(&uses, 200)]);
+        let same = || Ok(vec![picture(&uses, 101)]);
+
+        let mut verdicts = [verdict("ch03-lambert", true), verdict("ch03-spot", true)];
+        pictures(
+            &ours,
+            same(),
+            &mut verdicts,
+            &[verdict("ch02-closest", true)],
+        );
+        assert!(verdicts.iter().all(|v| v.passed), "within the tolerance");
+
+        pictures(
+            &ours,
+            differs(),
+            &mut verdicts,
+            &[verdict("ch02-closest", true)],
+        );
+        assert!(
+            verdicts.iter().all(|v| !v.passed),
+            "values agree, picture not"
+        );
+        assert!(verdicts[0].message.as_ref().unwrap().contains("differs"));
+
+        let mut verdicts = [verdict("ch03-lambert", true), verdict("ch03-spot", false)];
+        pictures(
+            &ours,
+            differs(),
+            &mut verdicts,
+            &[verdict("ch02-closest", true)],
+        );
+        assert!(verdicts[0].passed, "explained by ch03-spot's values");
+
+        let mut verdicts = [verdict("ch03-lambert", true), verdict("ch03-spot", true)];
+        pictures(
+            &ours,
+            differs(),
+            &mut verdicts,
+            &[verdict("ch02-closest", false)],
+        );
+        assert!(verdicts[0].passed, "explained by an earlier chapter's");
+
+        let mut verdicts = [verdict("ch03-lambert", true)];
+        pictures(&ours, Err("timed out".into()), &mut verdicts, &[]);
+        assert!(!verdicts[0].passed, "a scene not drawn differs");
+    }
+}
