@@ -6,8 +6,8 @@
 //! | folder    | what it does                                                   | expected            |
 //! |-----------|----------------------------------------------------------------|---------------------|
 //! | `honest`  | chapter 1 written                                              | 3/3, no flag        |
-//! | `printer` | an empty handout whose code prints `test NAME ... ok` for every | 0/3 (its tests all  |
-//! |           | test of the chapter, then exits 0                              | "pass")             |
+//! | `printer` | an empty handout whose exercises print `test NAME ... ok` for  | 0/3 (its tests      |
+//! |           | every test of the chapter, then exit 0                         | "pass")             |
 //! | `forger`  | ch01-ray-through written; ch01-at a lookup table of the tests' | 1/3, flagged where  |
 //! |           | expected values; ch01-frame the reference's frame for the      | it overwrote the    |
 //! |           | handout's scene, stored beside the embedded reference picture, | picture             |
@@ -63,11 +63,15 @@ fn hostile_submissions_get_only_their_honest_points_and_are_flagged() {
     assert_eq!(points("honest"), ["1", "1", "1"], "{:?}", rows["honest"]);
     assert_eq!(rows["honest"]["flags"], "");
 
-    // Its tests all "passed": the old grader gave it every point.
+    // Its tests "passed" (the old grader gave it every point); its probes
+    // wrote no values.
     let printer = &rows["printer"];
     assert_eq!(points("printer"), ["0", "0", "0"], "{printer:?}");
-    assert_eq!(printer["01-rays failed"], "0", "{printer:?}");
     assert_ne!(printer["01-rays passed"], "0", "{printer:?}");
+    assert!(
+        printer["why"].contains("ch01-frame: no values"),
+        "{printer:?}"
+    );
 
     let forger = &rows["forger"];
     assert_eq!(points("forger"), ["0", "0", "1"], "{forger:?}");
