@@ -100,6 +100,20 @@ pub fn cargo_test(place: &Place, package: &str, build_only: bool, jobs: usize) -
     place.command(&cargo, &args, (&place.copy, &[]))
 }
 
+/// `cargo build -p <package> --offline --no-default-features --features
+/// <features>` in the copy: the grader's probe, built with the chapters'
+/// features it is asked for (see `probe.rs`).
+pub fn cargo_build(place: &Place, package: &str, features: &[String], jobs: usize) -> Command {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut command = confined(&cargo, &place.copy);
+    command.args(["build", "--offline", "--color", "never", "-p", package]);
+    command.args(["--no-default-features", "--features", &features.join(",")]);
+    command.args(["--jobs", &jobs.max(1).to_string()]);
+    command.current_dir(&place.copy);
+    small_environment(&mut command, place);
+    command
+}
+
 /// A test binary of the copy, run as cargo runs it (in its package's
 /// folder), with the exercises `take_out` taken out (see
 /// [`workbench::exercise`]).

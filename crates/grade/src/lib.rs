@@ -73,12 +73,14 @@ mod cgroup;
 mod class;
 mod confine;
 mod digest;
+mod judge;
 mod mapping;
 mod outbound;
 mod outcomes;
 mod points;
 mod pool;
 mod reach;
+mod probe;
 mod reference;
 mod report;
 mod result;
@@ -102,7 +104,7 @@ pub use result::{ChapterRun, StudentResult, Verdict};
 /// The version of what grading caches (the tests of each exercise, each
 /// student's result): a new one when what they mean changes, so that a
 /// cache of an older workbook is never read as this one's.
-const CACHE_FORMAT: &str = "grade-cache-1";
+const CACHE_FORMAT: &str = "grade-cache-2";
 
 /// `grade`: grades a class of handouts against the reference.
 #[derive(clap::Args, Debug, Clone)]
@@ -177,6 +179,12 @@ pub struct GradeArgs {
     /// since the last run.
     #[arg(long)]
     pub again: bool,
+
+    /// The seed of the exercises' inputs and scenes (default: drawn anew;
+    /// either way kept in seed.txt in the output folder, never handed out).
+    /// Give the same one to reproduce a report.
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u64>,
 }
 
 /// Runs `grade`.
@@ -207,6 +215,9 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     let (class, names) = students(args)?;
     let settings = settings(args, &out, &class)?;
     sandbox_setup(args)?;
+    let seed_file = out.join("seed.txt");
+    toolkit::image::write_atomically(&seed_file, format!("{}\n", settings.seed).as_bytes())
+        .map_err(|e| format!("cannot write {}: {e}", seed_file.display()))?;
     let start = Instant::now();
     let reference = Reference::prepare(&root, &settings, &|line| eprintln!("{line}"))?;
     let prepared = start.elapsed();
@@ -298,6 +309,7 @@ fn settings(args: &GradeArgs, out: &Path, class: &Path) -> Result<Settings, Stri
         jobs,
         cache: out.join(".cache"),
         exclude: vec![out.to_owned(), class.to_owned()],
+        seed: probe::seed(args.seed),
     })
 }
 

@@ -11,6 +11,7 @@ use std::time::Duration;
 use super::cargo::{Place, TestBinary, cargo_test, test_binaries};
 use super::digest::Digest;
 use super::mapping::{ExerciseTests, Tests, exercise_tests};
+use super::probe::{self, Expected};
 use super::sandbox::{Limits, run};
 use super::share::Shared;
 use crate::handout::record::Record;
@@ -34,12 +35,16 @@ pub struct Settings {
     pub cache: PathBuf,
     /// Folders never read as part of the reference (the class, the output).
     pub exclude: Vec<PathBuf>,
+    /// The seed the probe draws the exercises' inputs and scenes from.
+    pub seed: u64,
 }
 
 /// The reference, prepared.
 pub struct Reference {
     /// Its version and commit.
     pub record: Record,
+    /// Its folder.
+    pub root: PathBuf,
     /// A hash of its files: a new one grades everyone again.
     pub hash: String,
     /// The tests of the chapters graded and of their exercises.
@@ -48,6 +53,11 @@ pub struct Reference {
     pub base: Place,
     /// What students' target folders share of the base build.
     pub shared: Shared,
+    /// The probe's files (teacher-only, so in no handout), relative to
+    /// `root`: copied into every copy, as the tests are.
+    pub probe_files: Vec<PathBuf>,
+    /// The values and scenes the reference's probe computed with the seed.
+    pub expected: Expected,
     /// Its files (a handout's: without the teacher's), relative to `root`.
     files: BTreeMap<PathBuf, ()>,
     /// The folders whose files are the students' own: each exercise
@@ -62,10 +72,13 @@ impl Reference {
     pub fn prepare(root: &Path, settings: &Settings, say: &dyn Fn(&str)) -> Result<Self, String> {
         same_manifest(root)?;
         let files = reference_files(root, &settings.exclude)?;
-        let hash = hash_of(root, &files)?;
+        let probe_files = probe::files(root)?;
+        let mut hashed = files.clone();
+        hashed.extend(probe_files.iter().map(|f| (f.clone(), ())));
+        let hash = hash_of(root, &hashed)?;
         let record = Record::of_workspace(root);
         say(&format!("reference {}: {}", record.label(), root.display()));
-        let base = write_base(root, &files, &settings.cache.join("base"), &hash)?;
+        let base = write_base(root, &hashed, &settings.cache.join("base"), &hash)?;
         let students: Vec<PathBuf> = (chapters::all().iter())
             .filter(|c| c.exercises)
             .map(|c| c.path().join("src"))
@@ -77,6 +90,13 @@ impl Reference {
             say(&format!("building the reference's {}", chapter.package()));
             binaries.insert(chapter.folder.clone(), build(&base, chapter, settings)?);
         }
+        say(&format!("probing the reference (seed {})", settings.seed));
+        let expected = probe::expected(
+            &base,
+            &settings.chapters,
+            settings.seed,
+            (&settings.build, settings.cargo_jobs),
+        )?;
         say("finding the tests of each exercise (cached for this reference)");
         let regions: Vec<(String, _)> = workspace_regions(root)?
             .into_iter()
@@ -96,10 +116,13 @@ impl Reference {
         )?;
         Ok(Reference {
             record,
+            root: root.to_owned(),
             hash,
             tests,
             base,
             shared,
+            probe_files,
+            expected,
             files,
             students,
         })

@@ -27,6 +27,8 @@ pub struct StudentResult {
     pub exercises: Vec<Verdict>,
     /// Wall-clock time of their grading, in seconds.
     pub seconds: f64,
+    /// The seed their exercises' inputs and scenes were drawn from.
+    pub seed: u64,
 }
 
 /// A chapter's build and test run.
@@ -64,17 +66,67 @@ pub struct Picture {
     pub diff: Option<String>,
 }
 
-/// An exercise's verdict.
+/// An exercise's verdict (the rule is `judge.rs`'s).
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Verdict {
     /// `ch03-lambert`.
     pub id: String,
     /// Its chapter's folder.
     pub chapter: String,
-    /// Does every test that grades it pass?
+    /// Does it earn its points?
     pub passed: bool,
-    /// If not, the first failing test's message, as progress shows it.
+    /// [`JUDGED_BY_VALUES`], or [`JUDGED_BY_TESTS`] for an exercise the
+    /// probe does not cover yet.
+    pub judged_by: String,
+    /// Why it earns its points or not, in a line: the values agreed on
+    /// every input, the first input that disagreed and both values, the
+    /// seeded scene that differs; or, judged by the tests, the first
+    /// failing test's message.
     pub message: Option<String>,
+    /// The inputs drawn, and how many agreed before the first that did not.
+    pub cases: usize,
+    pub agreed: usize,
+    /// The first drawn input on which its values disagree.
+    pub disagreement: Option<Disagreement>,
+    /// The first failing test's message (the chapter's own tests, run for
+    /// their feedback), when it is judged by its values.
+    pub feedback: Option<String>,
+}
+
+impl Verdict {
+    /// What the reports say of it: why it earns its points or not, how it
+    /// was judged, and the chapter's tests' message if they failed.
+    pub fn explained(&self) -> String {
+        let mut text = match (&self.message, self.passed) {
+            (Some(message), _) => message.clone(),
+            (None, true) => "passes".to_owned(),
+            (None, false) => "fails".to_owned(),
+        };
+        if self.judged_by == JUDGED_BY_TESTS {
+            text.push_str(" (judged by its chapter's tests: no probe of it yet)");
+        }
+        if let Some(feedback) = &self.feedback {
+            text.push_str(&format!("; the chapter's tests say: {feedback}"));
+        }
+        text
+    }
+}
+
+/// An exercise judged by what its code computed on the drawn inputs.
+pub const JUDGED_BY_VALUES: &str = "values";
+/// An exercise judged by its chapter's tests (no probe of it yet).
+pub const JUDGED_BY_TESTS: &str = "tests";
+
+/// The first drawn input on which a student's values disagree.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct Disagreement {
+    /// Its number among the inputs, from 1.
+    pub case: usize,
+    /// The input, as the probe shows it.
+    pub input: String,
+    /// The reference's value and the student's (JSON, shortened).
+    pub expected: String,
+    pub found: String,
 }
 
 impl StudentResult {

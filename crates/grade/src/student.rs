@@ -1,12 +1,14 @@
 //! Grading one student: their code in a fresh copy of the reference, each
-//! chapter built and tested there under the limits, each exercise judged by
-//! the tests that grade it.
+//! chapter built and tested there under the limits (the tests' messages are
+//! the feedback), then each exercise judged by what its code computed on
+//! the probe's drawn inputs, outside the sandbox (`judge.rs`).
 //!
 //! The copy is the reference's base copy with the student's own folders
 //! (each exercise chapter's `src/`) in place of the reference's: so their
-//! tests, pictures, manifest, Cargo files and lock file are the
-//! reference's, and no build script of theirs is there to run. Their
-//! folder is only read.
+//! tests, pictures, manifest, Cargo files, lock file and the grader's probe
+//! are the reference's, and no build script of theirs is there to run.
+//! Their folder is only read. After their runs, any of the reference's
+//! files in the copy that changed is flagged.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -74,11 +76,21 @@ fn grade_in(
     let target = place.outside(&place.target);
     reference.shared.put(&reference.base.target, &target)?;
     let _ = std::fs::remove_dir_all(pictures);
+    result.seed = reference.expected.seed;
     for chapter in &settings.chapters {
         let (mut chapter_run, found) = run_chapter(&place, chapter, settings)?;
-        for exercise in reference.exercises_of(&chapter.folder) {
-            result.exercises.push(judge(exercise, &chapter_run, &found));
-        }
+        let from_tests = (reference.exercises_of(&chapter.folder))
+            .map(|exercise| judge(exercise, &chapter_run, &found))
+            .collect();
+        let judged = super::judge::chapter(
+            &place,
+            chapter,
+            (reference, settings),
+            &chapter_run,
+            from_tests,
+            &result.exercises,
+        );
+        result.exercises.extend(judged);
         if chapter_run.compiled {
             let all = reference.tests.chapters.get(&chapter.folder);
             let missing = all.map(|t| t.iter().filter(|t| !found.0.contains_key(*t)).count());
@@ -88,6 +100,9 @@ fn grade_in(
         result.chapters.push(chapter_run);
     }
     result.notes.extend(place.notes());
+    result
+        .flags
+        .extend(super::judge::tampered(&place.copy, reference));
     Ok(())
 }
 
@@ -122,11 +137,25 @@ fn write_copy(
             copy_one(&reference.base.copy.join(path), &copy.join(path), true)?;
         }
     }
+    for path in &reference.probe_files {
+        let to = copy.join(path);
+        copy_one(&reference.base.copy.join(path), &to, true)?;
+        read_only(&to)?;
+    }
     for path in theirs {
         copy_one(&dir.join(path), &copy.join(path), false)?;
     }
     let copy = copy.canonicalize().map_err(|e| e.to_string())?;
     Place::student(&copy)
+}
+
+/// Makes the file at `path` read-only.
+fn read_only(path: &Path) -> Result<(), String> {
+    let mut permissions = std::fs::metadata(path)
+        .map_err(|e| format!("{}: {e}", path.display()))?
+        .permissions();
+    permissions.set_readonly(true);
+    std::fs::set_permissions(path, permissions).map_err(|e| format!("{}: {e}", path.display()))
 }
 
 /// What one chapter's test run printed, read two ways.
@@ -205,9 +234,11 @@ fn trouble(ran: &Ran, limits: &Limits, what: &str) -> Option<String> {
     }
 }
 
-/// An exercise's verdict: it passes when every test that grades it passed.
-/// Otherwise, the first failing test (in the chapter's order) and its
-/// message, as progress shows it.
+/// An exercise's verdict by its tests: it passes when every test that
+/// grades it passed. Otherwise, the first failing test (in the chapter's
+/// order) and its message, as progress shows it. This is the feedback of
+/// an exercise that the probe judges (`judge.rs`), and the verdict of one
+/// it does not cover yet.
 fn judge(exercise: &super::mapping::ExerciseTests, run: &ChapterRun, found: &Found) -> Verdict {
     let Found(outcomes, parsed) = found;
     let mut verdict = Verdict {

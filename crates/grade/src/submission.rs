@@ -236,6 +236,11 @@ pub fn changes(
         }
         match reference.file(path) {
             None => note(path, "added"),
+            Some(_) if path == Path::new("Cargo.lock") => {
+                if !same_lock(&dir.join(path), &root_lock(reference))? {
+                    note(path, "edited")
+                }
+            }
             Some(theirs) if !same_bytes(&dir.join(path), &theirs)? => note(path, "edited"),
             Some(_) => {}
         }
@@ -278,6 +283,38 @@ fn reaching_out(dir: &Path, path: &Path) -> Result<Vec<String>, String> {
         path,
         &folder,
     ))
+}
+
+/// The reference's lock file as its root holds it (the base copy's is the
+/// one cargo rewrote there).
+fn root_lock(reference: &Reference) -> PathBuf {
+    reference.root.join("Cargo.lock")
+}
+
+/// Are two lock files the same but for the teacher's packages (`grade`,
+/// `grade-probe`), which cargo drops from a handout's lock on its first
+/// build, since a handout holds neither?
+fn same_lock(theirs: &Path, reference: &Path) -> Result<bool, String> {
+    let read = |p: &Path| {
+        std::fs::read_to_string(p).map_err(|e| format!("cannot read {}: {e}", p.display()))
+    };
+    let size = std::fs::metadata(theirs).map(|m| m.len()).unwrap_or(0);
+    if size > 4 << 20 {
+        return Ok(false);
+    }
+    Ok(without_teacher(&read(theirs)?) == without_teacher(&read(reference)?))
+}
+
+/// A lock file's text without the teacher's packages.
+fn without_teacher(lock: &str) -> String {
+    let teacher = ["name = \"grade\"", "name = \"grade-probe\""];
+    let blocks = lock.split("\n[[package]]\n");
+    let kept = blocks.filter(|b| !teacher.iter().any(|t| b.starts_with(t)));
+    let text = kept.collect::<Vec<_>>().join("\n[[package]]\n");
+    text.lines()
+        .filter(|l| l.trim() != "\"grade-probe\",")
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 /// Do the student's file and the reference's hold the same bytes? Sizes

@@ -3,15 +3,19 @@
 //! edits, and five folders that are not handouts. (The snapshot keeps the
 //! test's reference still while others edit the workspace.)
 //!
+//! Points come from the values each exercise's code computed on inputs
+//! drawn from a seed (the probe; `judge.rs` states the rule), so each
+//! student gets exactly what their honest work earns:
+//!
 //! | folder          | what it is                                   | expected row                         |
 //! |-----------------|----------------------------------------------|--------------------------------------|
 //! | `complete`      | chapters 1–3 written                         | every exercise, no flag              |
-//! | `half`          | chapter 1 written, one of chapter 2's too    | chapter 1's, none of chapter 3's     |
+//! | `half`          | chapter 1 written, ch02-plane too            | chapter 1's and ch02-plane, no more  |
 //! | `broken`        | all written, chapter 2 does not compile      | chapter 1's; 2 and 3 do not compile  |
-//! | `endless`       | all written, chapter 3's lambert loops       | chapters 1–2's; ch03-lambert timed out |
+//! | `endless`       | all written, chapter 3's lambert loops       | all but ch03-lambert (timed out)     |
 //! | `cheater`       | chapter 1 written, a chapter 2 test gutted   | chapter 1's only, flagged            |
 //! | `picture`       | all written, a reference picture replaced    | every exercise, flagged              |
-//! | `mistaken`      | all written, a classic mistake in lambert    | chapters 1–2's, its diff shown       |
+//! | `mistaken`      | all written, a classic mistake in lambert    | all but ch03-lambert, its diff shown |
 //!
 //! `half` also holds a symlink in its sources and code that tries to write
 //! outside its copy. And `empty/`, `notes.txt`, `outside` (a symlink out
@@ -81,6 +85,9 @@ fn a_fixture_class_gets_the_right_rows_and_every_folder_is_left_as_it_was() {
     eprintln!("grades.csv:\n{gradebook}");
     let rows = read_csv(&out.join("grades.csv"));
     check_rows(&rows);
+    // The teacher keeps the seed the inputs were drawn from.
+    let seed = std::fs::read_to_string(out.join("seed.txt")).unwrap();
+    assert_eq!(rows["complete"]["seed"], seed.trim());
     check_outputs(&out, &rows);
 
     // A rerun grades no one; after an edit, only the student who made it.
@@ -251,9 +258,17 @@ fn check_rows(rows: &std::collections::BTreeMap<String, Row>) {
     );
     assert!(row("picture")["flags"].contains("edited snapshots/01-rays/default.snap.png"));
 
+    // Its own plane earns its point: exercises are judged one by one.
     let half = row("half");
     assert!(passes(half, &CH01) && fails(half, &CH03), "{half:?}");
-    assert_eq!(half["compiled"], "yes");
+    assert!(
+        passes(half, &["ch02-plane"]) && fails(half, &CH02[2..]),
+        "{half:?}"
+    );
+    assert_eq!(
+        (half["score"].as_str(), half["compiled"].as_str()),
+        ("4", "yes")
+    );
 
     let broken = row("broken");
     assert!(passes(broken, &CH01) && fails(broken, &CH02) && fails(broken, &CH03));
@@ -263,28 +278,36 @@ fn check_rows(rows: &std::collections::BTreeMap<String, Row>) {
         "{broken:?}"
     );
 
+    // Each exercise is probed in a run of its own: the endless lambert
+    // costs only itself.
     let endless = row("endless");
     assert!(
-        passes(endless, &CH01) && passes(endless, &CH02),
+        passes(endless, &CH01) && passes(endless, &CH02) && passes(endless, &CH03[1..]),
         "{endless:?}"
     );
     assert_eq!(endless["ch03-lambert"], "0");
+    assert!(endless["why"].contains("ch03-lambert: no values: its probe timed out"));
     assert!(
         endless["troubles"].contains("03-lambert: the tests timed out"),
         "{endless:?}"
     );
 
-    // The tests that grade an exercise may grade others too (the chapter's
-    // snapshot needs every one): a mistake in one costs the chapter's.
+    // A mistake costs only its own exercise: the chapter's seeded scenes
+    // differ, but that is explained by lambert's values, which disagree.
     let mistaken = row("mistaken");
     assert!(
-        passes(mistaken, &CH01) && passes(mistaken, &CH02),
+        passes(mistaken, &CH01) && passes(mistaken, &CH02) && passes(mistaken, &CH03[1..]),
         "{mistaken:?}"
     );
     assert_eq!(mistaken["ch03-lambert"], "0");
+    assert!(
+        mistaken["why"].contains("ch03-lambert: disagrees on drawn input"),
+        "{mistaken:?}"
+    );
 
     let cheater = row("cheater");
     assert!(passes(cheater, &CH01) && fails(cheater, &CH02) && fails(cheater, &CH03));
+    assert_eq!(cheater["score"], "3", "{cheater:?}");
     assert!(
         cheater["flags"].contains("edited chapters/02-hits/tests/chapter02/main.rs"),
         "{cheater:?}"

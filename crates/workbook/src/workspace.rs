@@ -71,16 +71,21 @@ pub struct Written {
 /// `mistakes.toml` (its classic mistakes are the solutions with one change,
 /// and its `[[lecture]]` entries the lecture's own solutions), and the
 /// grader (`crates/grade`: its fixture writes solutions, and grading is
-/// not the student's tool). The maintainers' checks read them from the
-/// reference.
+/// not the student's tool) and its probe (`crates/grade-probe`: how the
+/// grader draws the inputs it judges on). The maintainers' checks read
+/// them from the reference.
 pub fn teacher_only(file: &Path) -> bool {
     let mistakes = file.starts_with("chapters")
         && file.file_name().is_some_and(|name| name == "mistakes.toml");
-    mistakes || file.starts_with(GRADER)
+    mistakes || file.starts_with(GRADER) || file.starts_with(PROBE)
 }
 
 /// The teacher's grader, which no handout holds.
 pub const GRADER: &str = "crates/grade";
+
+/// The grader's probe, which no handout holds either: the grader copies it
+/// into each student's copy itself.
+pub const PROBE: &str = "crates/grade-probe";
 
 /// Copies the workspace at `root` into `dir`, without the files that are
 /// [`teacher_only`], and with the selected exercise regions of every `.rs`

@@ -28,6 +28,7 @@ pub fn gradebook(class: &Class) -> String {
     }
     header.extend(exercises.iter().map(|e| e.id.clone()));
     header.extend(["flags", "troubles", "warnings", "reference"].map(String::from));
+    header.extend(["seed", "why"].map(String::from));
     let mut text = line(&header);
     for student in class.students {
         text.push_str(&line(&row(class, student, &folders)));
@@ -75,6 +76,13 @@ fn row(class: &Class, student: &StudentResult, folders: &[&str]) -> Vec<String> 
     cells.push(student.troubles().join("; "));
     cells.push(student.warnings.join("; "));
     cells.push(class.label());
+    // The seed the values were judged with, and each exercise without its
+    // points: the first drawn input that disagrees and both values.
+    cells.push(student.seed.to_string());
+    let why = (student.exercises.iter())
+        .filter(|v| !v.passed)
+        .map(|v| format!("{}: {}", v.id, v.message.as_deref().unwrap_or("fails")));
+    cells.push(why.collect::<Vec<_>>().join("; "));
     cells
 }
 

@@ -17,8 +17,8 @@ pub fn results_json(class: &Class, student: &StudentResult) -> String {
             let verdict = student.verdict(&exercise.id);
             let passed = verdict.is_some_and(|v| v.passed);
             let max = class.points.of(&exercise.id);
-            let output = match verdict.and_then(|v| v.message.clone()) {
-                Some(message) => message,
+            let output = match verdict.filter(|v| v.message.is_some()) {
+                Some(v) => v.explained(),
                 None if passed => match exercise.tests.len() {
                     1 => "passes the test that grades it".to_owned(),
                     n => format!("passes the {n} tests that grade it"),
@@ -50,6 +50,13 @@ pub fn results_json(class: &Class, student: &StudentResult) -> String {
 /// student should know (not graded, flags, troubles, warnings).
 fn summary(class: &Class, student: &StudentResult) -> String {
     let mut lines = vec![format!("Graded against raybook {}.", class.label())];
+    if student.refused.is_none() {
+        lines.push(
+            "Each exercise is judged by what your code computes on inputs drawn at grading \
+             time, against the reference's; your chapter's tests' messages are feedback."
+                .to_owned(),
+        );
+    }
     if let Some(reason) = &student.refused {
         lines.push(format!("Not graded: {reason}"));
     }

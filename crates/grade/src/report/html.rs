@@ -147,13 +147,11 @@ fn row(class: &Class, student: &StudentResult) -> String {
             Some(v) if v.passed => ("ok", "✓"),
             _ => ("no", "✗"),
         };
-        let title = verdict
-            .and_then(|v| v.message.as_deref())
-            .unwrap_or("passes");
+        let title = verdict.map_or("not graded".to_owned(), |v| v.explained());
         let _ = write!(
             html,
             "<td class=\"{class_name}\" title=\"{}\">{mark}</td>",
-            escape(title)
+            escape(&title)
         );
     }
     let flags = match student.flags.len() {
@@ -240,8 +238,8 @@ fn chapter(
     {
         let verdict = student.verdict(&e.id);
         let text = match verdict {
-            Some(v) if v.passed => "✓ passes".to_owned(),
-            Some(v) => format!("✗ {}", v.message.as_deref().unwrap_or("fails")),
+            Some(v) if v.passed => format!("✓ {}", v.explained()),
+            Some(v) => format!("✗ {}", v.explained()),
             None => "not graded".to_owned(),
         };
         let _ = write!(

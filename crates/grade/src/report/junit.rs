@@ -76,12 +76,16 @@ fn case(student: &StudentResult, id: &str, chapter: &str) -> String {
     let verdict = student.verdict(id);
     let open = format!("    <testcase classname=\"{classname}\" name=\"{id}\"");
     match verdict {
-        Some(v) if v.passed => format!("{open}/>\n"),
+        Some(v) if v.passed => format!(
+            "{open}>\n      <system-out>{}</system-out>\n    </testcase>\n",
+            escape(&v.explained())
+        ),
         _ => {
             let message = verdict.and_then(|v| v.message.as_deref());
             let message = escape(message.unwrap_or("not graded"));
+            let body = escape(&verdict.map_or("not graded".to_owned(), |v| v.explained()));
             format!(
-                "{open}>\n      <failure message=\"{message}\">{message}</failure>\n    </testcase>\n"
+                "{open}>\n      <failure message=\"{message}\">{body}</failure>\n    </testcase>\n"
             )
         }
     }

@@ -34,13 +34,18 @@ pub fn handout(reference: &Path, dir: &Path, solved_through: u32) {
 /// `grade ARGS --reference R --out OUT --chapters 1-3`: what it
 /// printed (stdout, then stderr). Panics if it fails.
 pub fn grade(reference: &Path, out: &Path, args: &[&OsStr]) -> String {
+    grade_chapters(reference, out, args, "1-3")
+}
+
+/// [`grade`] of the `chapters` given.
+pub fn grade_chapters(reference: &Path, out: &Path, args: &[&OsStr], chapters: &str) -> String {
     let run = Command::new(env!("CARGO_BIN_EXE_grade"))
         .args(args)
         .arg("--reference")
         .arg(reference)
         .arg("--out")
         .arg(out)
-        .args(["--chapters", "1-3"])
+        .args(["--chapters", chapters])
         .output()
         .unwrap();
     let text = format!(

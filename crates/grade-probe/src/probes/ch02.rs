@@ -1,0 +1,229 @@
+//! Chapter 2: the plane, the lecture's sphere quadratic, the nearest root,
+//! the lecture's triangle test, the closest hit.
+
+use super::Probe;
+use crate::Case;
+use crate::draw::{Rng, chance, number, point, show, unit, v3, whole};
+use ch02_hits::toolkit::Vec3;
+use ch02_hits::toolkit::scene::{Object, Shape};
+use ch02_hits::{Hit, Ray};
+use serde_json::{Value, json};
+
+pub fn probes() -> Vec<Probe> {
+    let probe = |id, tolerance, case| Probe {
+        id,
+        chapter: "02-hits",
+        tolerance,
+        case,
+    };
+    vec![
+        probe("ch02-closest", 1e-4, closest),
+        probe("ch02-plane", 1e-4, plane),
+        // The lecture's quadratic in f32 loses digits to cancellation; two
+        // correct ways of writing it agree to about 1e-4 away from tangency.
+        probe("ch02-sphere", 1e-3, sphere),
+        probe("ch02-nearest", 1e-6, nearest),
+        probe("ch02-triangle", 1e-3, triangle),
+    ]
+}
+
+/// A ray from anywhere in a box, towards `target` if given.
+fn ray(rng: &mut Rng, target: Option<Vec3>) -> Ray {
+    let origin = point(rng, 8.0);
+    let direction = match target {
+        Some(target) if (target - origin).length() > 1e-3 => (target - origin).normalize(),
+        _ => unit(rng),
+    };
+    Ray { origin, direction }
+}
+
+/// A range (t_min, t_max): from 0 or a small positive number, to a finite
+/// bound or infinity.
+fn range(rng: &mut Rng) -> (f32, f32) {
+    let t_min = if chance(rng, 0.5) {
+        0.0
+    } else {
+        number(rng, 1e-4, 2.0)
+    };
+    let t_max = if chance(rng, 0.4) {
+        f32::INFINITY
+    } else {
+        number(rng, 12.0, 40.0)
+    };
+    (t_min, t_max)
+}
+
+fn show_ray(ray: &Ray) -> String {
+    format!("ray {} → {}", show(ray.origin), show(ray.direction))
+}
+
+/// Is t within `margin` of either end of the range (where rounding may
+/// rightly decide either way)?
+fn near_ends(t: f32, (t_min, t_max): (f32, f32), margin: f32) -> bool {
+    (t - t_min).abs() < margin || (t - t_max).abs() < margin
+}
+
+fn plane(rng: &mut Rng) -> Option<Case> {
+    let (normal, offset) = (unit(rng), number(rng, -5.0, 5.0));
+    let ray = ray(rng, None);
+    let range = range(rng);
+    let cos = normal.dot(ray.direction);
+    let t = -(normal.dot(ray.origin) + offset) / cos;
+    if cos.abs() < 0.05 || near_ends(t, range, 1e-2) {
+        return None;
+    }
+    let hit = ch02_hits::intersect_plane(normal, offset, &ray, range.0, range.1);
+    Some(Case {
+        input: format!(
+            "plane n {}, d {offset:?}; {}; t in ({:?}, {:?})",
+            show(normal),
+            show_ray(&ray),
+            range.0,
+            range.1
+        ),
+        value: json!(hit),
+    })
+}
+
+fn sphere(rng: &mut Rng) -> Option<Case> {
+    let (center, radius) = (point(rng, 5.0), number(rng, 0.2, 3.0));
+    let aim = center + unit(rng) * number(rng, 0.0, 1.3 * radius);
+    let ray = ray(rng, Some(aim));
+    // Away from tangency, where the f32 roots of two correct formulas part.
+    let to_center = center - ray.origin;
+    let along = to_center.dot(ray.direction);
+    let miss = (to_center - along * ray.direction).length() / radius;
+    if (0.95..1.05).contains(&miss) {
+        return None;
+    }
+    let roots = ch02_hits::sphere_roots_abc(center, radius, &ray);
+    Some(Case {
+        input: format!(
+            "sphere m {}, ρ {radius:?}; {}",
+            show(center),
+            show_ray(&ray)
+        ),
+        value: json!(roots.map(|(a, b)| [a, b])),
+    })
+}
+
+fn nearest(rng: &mut Rng) -> Option<Case> {
+    let a = number(rng, -4.0, 14.0);
+    let b = if chance(rng, 0.1) {
+        a
+    } else {
+        number(rng, -4.0, 14.0)
+    };
+    let (near, far) = (a.min(b), a.max(b));
+    let range = (number(rng, -2.0, 2.0), number(rng, 2.5, 12.0));
+    if near_ends(near, range, 1e-3) || near_ends(far, range, 1e-3) {
+        return None;
+    }
+    let root = ch02_hits::nearest_root((near, far), range.0, range.1);
+    Some(Case {
+        input: format!(
+            "roots ({near:?}, {far:?}); t in ({:?}, {:?})",
+            range.0, range.1
+        ),
+        value: json!(root),
+    })
+}
+
+fn triangle(rng: &mut Rng) -> Option<Case> {
+    let p0 = point(rng, 5.0);
+    let (p1, p2) = (p0 + point(rng, 3.0), p0 + point(rng, 3.0));
+    let normal = (p1 - p0).cross(p2 - p0);
+    if normal.length() < 0.5 {
+        return None;
+    }
+    let (a, b) = (number(rng, -0.2, 0.9), number(rng, -0.2, 0.9));
+    // Away from the edges, where two correct tests may rightly differ.
+    if [a, b, 1.0 - a - b].iter().any(|w| w.abs() < 0.02) {
+        return None;
+    }
+    let ray = ray(rng, Some(p0 + a * (p1 - p0) + b * (p2 - p0)));
+    if normal.normalize().dot(ray.direction).abs() < 0.1 {
+        return None;
+    }
+    let range = range(rng);
+    let t = (p0 + a * (p1 - p0) + b * (p2 - p0) - ray.origin).length();
+    if near_ends(t, range, 1e-2) {
+        return None;
+    }
+    let hit = ch02_hits::triangle_by_plane([p0, p1, p2], &ray, range.0, range.1);
+    Some(Case {
+        input: format!(
+            "triangle {}, {}, {}; {}; t in ({:?}, {:?})",
+            show(p0),
+            show(p1),
+            show(p2),
+            show_ray(&ray),
+            range.0,
+            range.1
+        ),
+        value: json!(hit.map(|(t, a, b)| [t, a, b])),
+    })
+}
+
+/// The closest of a few spheres, planes and triangles, found with the
+/// tracer's own tests (`ch02_hits::intersect`, none of the student's
+/// intersection exercises).
+fn closest(rng: &mut Rng) -> Option<Case> {
+    let count = whole(rng, 0, 6);
+    let objects: Vec<Object> = (0..count)
+        .map(|i| Object {
+            shape: shape(rng),
+            material: i as usize,
+            shadows: true,
+        })
+        .collect();
+    let aim = point(rng, 4.0);
+    let ray = ray(rng, Some(aim));
+    let range = range(rng);
+    let mut ts: Vec<f32> = (objects.iter())
+        .filter_map(|o| ch02_hits::intersect(&o.shape, &ray, range.0, range.1))
+        .collect();
+    ts.sort_by(f32::total_cmp);
+    if ts.windows(2).any(|w| w[1] - w[0] < 1e-3) {
+        return None;
+    }
+    let hit = ch02_hits::closest_hit_by(ch02_hits::intersect, &objects, &ray, range.0, range.1);
+    let shapes: Vec<String> = objects.iter().map(|o| format!("{:?}", o.shape)).collect();
+    Some(Case {
+        input: format!(
+            "objects [{}]; {}; t in ({:?}, {:?})",
+            shapes.join(", "),
+            show_ray(&ray),
+            range.0,
+            range.1
+        ),
+        value: hit.map_or(Value::Null, |h: Hit| {
+            json!([h.t, h.object, v3(h.point), v3(h.normal)])
+        }),
+    })
+}
+
+/// A sphere, plane or triangle near the origin.
+fn shape(rng: &mut Rng) -> Shape {
+    match whole(rng, 0, 2) {
+        0 => Shape::Sphere {
+            center: point(rng, 4.0),
+            radius: number(rng, 0.2, 1.5),
+        },
+        1 => Shape::Plane {
+            normal: unit(rng),
+            offset: number(rng, -6.0, 6.0),
+        },
+        _ => {
+            let p0 = point(rng, 4.0);
+            let vertices = [p0, p0 + point(rng, 3.0), p0 + point(rng, 3.0)];
+            match (vertices[1] - p0).cross(vertices[2] - p0).length() > 0.3 {
+                true => Shape::Triangle { vertices },
+                false => Shape::Sphere {
+                    center: p0,
+                    radius: 0.7,
+                },
+            }
+        }
+    }
+}

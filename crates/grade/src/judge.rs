@@ -1,0 +1,324 @@
+//! Judging an exercise by what the student's code computed, outside the
+//! sandbox: the probe's values and scenes (`probe.rs`), drawn from a seed
+//! the teacher keeps, against the reference's.
+//!
+//! The rule, for each exercise the probe covers:
+//!
+//! 1. **Values.** It earns its points only if its values agree with the
+//!    reference's on every drawn input (`grade_probe::first_disagreement`,
+//!    with the tolerance the reference's probe states). Otherwise the
+//!    first input that disagrees, and both values, are its feedback.
+//! 2. **Pictures.** Every seeded scene of its chapter that its code draws
+//!    must come out as the reference's, within the chapters' snapshot
+//!    tolerance (`workbench::compare::Tolerance::for_size`). A scene that
+//!    differs while some exercise that draws it already disagrees on its
+//!    values (of this chapter or an earlier one) is explained by that
+//!    exercise, which has lost its points already: nothing more is taken.
+//!    A scene that differs while every exercise that draws it agrees on
+//!    its values shows a mistake the values cannot (how they are put
+//!    together): then every exercise of the chapter that draws it loses.
+//!
+//! A chapter that does not compile earns nothing; a probe run that does
+//! not finish in its time, crashes, or writes no output of the right form
+//! leaves that exercise (or the chapter's scenes) without values, which
+//! disagree. The chapters' own tests still run, for their feedback (the
+//! message that names the mistake); they decide the points only of an
+//! exercise the probe does not cover yet, and its verdict says so.
+
+use std::path::Path;
+
+use grade_probe::{Picture, first_disagreement};
+use workbench::chapters::ChapterEntry;
+use workbench::compare::{Tolerance, Verdict as Compared, compare};
+
+use super::cargo::Place;
+use super::probe::{self, Expected};
+use super::reference::{Reference, Settings};
+use super::result::{ChapterRun, Disagreement, JUDGED_BY_TESTS, JUDGED_BY_VALUES, Verdict};
+
+/// The verdicts of `chapter`'s exercises, from the tests' verdicts
+/// (`from_tests`, kept as feedback) and the probe run in `place`;
+/// `earlier` are the verdicts of the chapters before.
+pub fn chapter(
+    place: &Place,
+    chapter: &ChapterEntry,
+    (reference, settings): (&Reference, &Settings),
+    run: &ChapterRun,
+    from_tests: Vec<Verdict>,
+    earlier: &[Verdict],
+) -> Vec<Verdict> {
+    let expected = &reference.expected;
+    let mut verdicts: Vec<Verdict> = from_tests.into_iter().map(|v| start(v, expected)).collect();
+    if !verdicts.iter().any(|v| v.judged_by == JUDGED_BY_VALUES) {
+        return verdicts;
+    }
+    let mut probed: Vec<&mut Verdict> = (verdicts.iter_mut())
+        .filter(|v| v.judged_by == JUDGED_BY_VALUES)
+        .collect();
+    if let Some(error) = &run.compile_error {
+        for v in &mut probed {
+            v.message = Some(format!("does not compile: {error}"));
+        }
+        return verdicts;
+    }
+    let features = [probe::feature(chapter)];
+    let built = probe::build(place, &features, &settings.build, settings.cargo_jobs);
+    let failed = match built {
+        Ok(ran) if ran.success => None,
+        Ok(ran) => Some(first_error(&ran.text)),
+        Err(e) => Some(e),
+    };
+    if let Some(error) = failed {
+        for v in &mut probed {
+            v.message = Some(format!("the probe of its chapter does not build: {error}"));
+        }
+        return verdicts;
+    }
+    let limits = probe::limits(&settings.test);
+    for v in &mut probed {
+        values(
+            v,
+            probe::run_one(place, ["--exercise", &v.id], expected.seed, &limits),
+            expected,
+        );
+    }
+    let scenes = probe::run_one(place, ["--scenes", &chapter.folder], expected.seed, &limits);
+    let ours = expected
+        .scenes
+        .get(&chapter.folder)
+        .map_or(&[][..], Vec::as_slice);
+    pictures(ours, scenes.map(|p| p.scenes), &mut verdicts, earlier);
+    verdicts
+}
+
+/// A verdict judged by values (not passed yet), or by the tests if the
+/// probe does not cover the exercise; the tests' message kept as feedback.
+fn start(from_tests: Verdict, expected: &Expected) -> Verdict {
+    if !expected.probes(&from_tests.id) {
+        return Verdict {
+            judged_by: JUDGED_BY_TESTS.to_owned(),
+            ..from_tests
+        };
+    }
+    Verdict {
+        passed: false,
+        judged_by: JUDGED_BY_VALUES.to_owned(),
+        feedback: from_tests.message.filter(|_| !from_tests.passed),
+        message: None,
+        ..from_tests
+    }
+}
+
+/// Judges `v` by the values the probe run gave.
+fn values(v: &mut Verdict, outcome: probe::Outcome, expected: &Expected) {
+    let ours = &expected.values[&v.id];
+    v.cases = ours.cases.len();
+    let theirs = match outcome {
+        Ok(probed) => probed.exercises.into_iter().find(|x| x.id == v.id),
+        Err(why) => {
+            v.message = Some(format!("no values: its probe {why}"));
+            return;
+        }
+    };
+    let Some(theirs) = theirs else {
+        v.message = Some("no values: its probe wrote none for it".to_owned());
+        return;
+    };
+    match first_disagreement(ours, &theirs) {
+        None => {
+            (v.passed, v.agreed) = (true, v.cases);
+            v.message = Some(format!(
+                "agrees with the reference on all {} drawn inputs",
+                v.cases
+            ));
+        }
+        Some(i) => {
+            v.agreed = i;
+            let found = theirs.cases.get(i).map(|c| &c.value);
+            let disagreement = Disagreement {
+                case: i + 1,
+                input: ours.cases[i].input.clone(),
+                expected: short(&ours.cases[i].value),
+                found: found.map_or("nothing".to_owned(), short),
+            };
+            v.message = Some(format!(
+                "disagrees on drawn input {} of {}: {}: the reference gives {}, yours {}",
+                disagreement.case,
+                v.cases,
+                disagreement.input,
+                disagreement.expected,
+                disagreement.found
+            ));
+            v.disagreement = Some(disagreement);
+        }
+    }
+}
+
+/// A value as the report shows it: at most 300 characters.
+fn short(value: &serde_json::Value) -> String {
+    let text = value.to_string();
+    match text.char_indices().nth(300) {
+        Some((at, _)) => format!("{}…", &text[..at]),
+        None => text,
+    }
+}
+
+/// Applies the pictures' rule (module documentation) to `verdicts`, given
+/// the reference's scenes `ours` and what the student's probe drew.
+fn pictures(
+    ours: &[Picture],
+    theirs: Result<Vec<Picture>, String>,
+    verdicts: &mut [Verdict],
+    earlier: &[Verdict],
+) {
+    let disagreeing: Vec<String> = (earlier.iter().chain(verdicts.iter()))
+        .filter(|v| !v.passed)
+        .map(|v| v.id.clone())
+        .collect();
+    for (k, scene) in ours.iter().enumerate() {
+        let problem = match &theirs {
+            Err(why) => Some(format!("was not drawn: its probe {why}")),
+            Ok(pictures) => picture_problem(scene, pictures.get(k)),
+        };
+        let Some(problem) = problem else { continue };
+        if scene.uses.iter().any(|id| disagreeing.contains(id)) {
+            continue; // explained by an exercise that lost its points already
+        }
+        for v in verdicts.iter_mut() {
+            if v.passed && v.judged_by == JUDGED_BY_VALUES && scene.uses.contains(&v.id) {
+                v.passed = false;
+                v.message = Some(format!(
+                    "agrees on its {} drawn inputs, but the {} {problem}",
+                    v.cases, scene.name
+                ));
+            }
+        }
+    }
+}
+
+/// What is wrong with the student's picture of `scene`, if anything.
+fn picture_problem(scene: &Picture, theirs: Option<&Picture>) -> Option<String> {
+    let Some(theirs) = theirs else {
+        return Some("is missing".to_owned());
+    };
+    let image = |p: &Picture| image::RgbImage::from_raw(p.width, p.height, p.rgb.clone());
+    let (Some(expected), Some(found)) = (image(scene), image(theirs)) else {
+        return Some("is not a picture".to_owned());
+    };
+    if theirs.name != scene.name {
+        return Some("is not the scene drawn".to_owned());
+    }
+    let tolerance = Tolerance::for_size(scene.width, scene.height);
+    match compare(&expected, &found, tolerance) {
+        Compared::Pass(_) => None,
+        Compared::Differs(d) => Some(format!(
+            "differs from the reference's in {} of {} pixels (at most {} may differ by more \
+             than {} steps)",
+            d.pixels_over, d.total, tolerance.pixels, tolerance.channel
+        )),
+        Compared::WrongSize { found, .. } => Some(format!("is {}×{}", found.0, found.1)),
+    }
+}
+
+/// The first compile error of a build's output, or its last error line.
+fn first_error(text: &str) -> String {
+    let line = (text.lines()).find(|l| l.starts_with("error"));
+    line.unwrap_or("the build failed").to_owned()
+}
+
+/// The reference's files in `copy` (the tests, pictures, Cargo files and the
+/// probe's sources: everything but the student's own folders) that are no
+/// longer the reference's after the student's runs: each is a flag.
+pub fn tampered(copy: &Path, reference: &Reference) -> Vec<String> {
+    let theirs = (reference.files())
+        .filter(|p| !reference.is_students(p))
+        .chain(&reference.probe_files);
+    let mut changed = Vec::new();
+    for path in theirs {
+        let (ours, in_copy) = (reference.base.copy.join(path), copy.join(path));
+        let same = std::fs::symlink_metadata(&in_copy).is_ok_and(|m| {
+            m.file_type().is_file()
+                && std::fs::metadata(&ours).is_ok_and(|o| o.len() == m.len())
+                && std::fs::read(&in_copy).ok() == std::fs::read(&ours).ok()
+        });
+        if !same {
+            changed.push(format!("changed during the run: {}", path.display()));
+        }
+    }
+    changed
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn verdict(id: &str, passed: bool) -> Verdict {
+        Verdict {
+            id: id.to_owned(),
+            passed,
+            judged_by: JUDGED_BY_VALUES.to_owned(),
+            ..Verdict::default()
+        }
+    }
+
+    fn picture(uses: &[&str], shade: u8) -> Picture {
+        Picture {
+            name: "03-lambert seeded scene 1".to_owned(),
+            uses: uses.iter().map(|s| s.to_string()).collect(),
+            width: 8,
+            height: 8,
+            rgb: vec![shade; 8 * 8 * 3],
+        }
+    }
+
+    #[test]
+    fn a_differing_scene_costs_its_exercises_unless_one_drawing_it_lost_already() {
+        let uses = ["ch02-closest", "ch03-lambert", "ch03-spot"];
+        let ours = [picture(&uses, 100)];
+        let differs = || Ok(vec![picture(&uses, 200)]);
+        let same = || Ok(vec![picture(&uses, 101)]);
+
+        let mut verdicts = [verdict("ch03-lambert", true), verdict("ch03-spot", true)];
+        pictures(
+            &ours,
+            same(),
+            &mut verdicts,
+            &[verdict("ch02-closest", true)],
+        );
+        assert!(verdicts.iter().all(|v| v.passed), "within the tolerance");
+
+        pictures(
+            &ours,
+            differs(),
+            &mut verdicts,
+            &[verdict("ch02-closest", true)],
+        );
+        assert!(
+            verdicts.iter().all(|v| !v.passed),
+            "values agree, picture not"
+        );
+        assert!(verdicts[0].message.as_ref().unwrap().contains("differs"));
+
+        let mut verdicts = [verdict("ch03-lambert", true), verdict("ch03-spot", false)];
+        pictures(
+            &ours,
+            differs(),
+            &mut verdicts,
+            &[verdict("ch02-closest", true)],
+        );
+        assert!(verdicts[0].passed, "explained by ch03-spot's values");
+
+        let mut verdicts = [verdict("ch03-lambert", true), verdict("ch03-spot", true)];
+        pictures(
+            &ours,
+            differs(),
+            &mut verdicts,
+            &[verdict("ch02-closest", false)],
+        );
+        assert!(verdicts[0].passed, "explained by an earlier chapter's");
+
+        let mut verdicts = [verdict("ch03-lambert", true)];
+        pictures(&ours, Err("timed out".into()), &mut verdicts, &[]);
+        assert!(!verdicts[0].passed, "a scene not drawn differs");
+    }
+}
