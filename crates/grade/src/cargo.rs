@@ -105,13 +105,13 @@ pub fn cargo_test(place: &Place, package: &str, build_only: bool, jobs: usize) -
 /// features it is asked for (see `probe.rs`).
 pub fn cargo_build(place: &Place, package: &str, features: &[String], jobs: usize) -> Command {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    let mut command = confined(&cargo, &place.copy);
-    command.args(["build", "--offline", "--color", "never", "-p", package]);
-    command.args(["--no-default-features", "--features", &features.join(",")]);
-    command.args(["--jobs", &jobs.max(1).to_string()]);
-    command.current_dir(&place.copy);
-    small_environment(&mut command, place);
-    command
+    let mut args: Vec<OsString> = ["build", "--offline", "--color", "never", "-p", package]
+        .map(OsString::from)
+        .to_vec();
+    args.extend(["--no-default-features".into(), "--features".into()]);
+    args.push(features.join(",").into());
+    args.extend(["--jobs".into(), jobs.max(1).to_string().into()]);
+    place.command(&cargo, &args, (&place.copy, &[]))
 }
 
 /// A test binary of the copy, run as cargo runs it (in its package's
