@@ -148,18 +148,17 @@ fn refraction_split() -> crate::svg::Drawn {
     svg.fact(xy(left, 150.0), "η = n₁ / n₂", LABEL);
     svg.fact(xy(left, 174.0), "sin θ₂ = η sin θ₁", LABEL);
     svg.text(xy(left, 222.0), "the part across N, scaled:", NOTE);
-    svg.fact(
+    svg.text(
         xy(left, 244.0),
-        "across' = η (d + cos θ₁ N)",
+        "across': η times d's part across N",
         LABEL.colour(FRAME),
     );
-    svg.text(xy(left, 292.0), "with its part along N, −cos θ₂ N:", NOTE);
-    svg.text_with_fact(
-        xy(left, 314.0),
-        "d' = η d + (η cos θ₁ − cos θ₂) N",
-        "η d + (η cos θ₁ − cos θ₂) N",
-        LABEL.colour(REFRACT),
+    svg.text(
+        xy(left, 292.0),
+        "with its part along N, of length cos θ₂:",
+        NOTE,
     );
+    svg.text(xy(left, 314.0), "d', a unit vector", LABEL.colour(REFRACT));
     svg.finish()
 }
 
