@@ -248,11 +248,7 @@ fn falloff_plot(svg: &mut Svg) {
         "angle between n and h",
         NOTE.colour(INK).middle(),
     );
-    svg.text(
-        at(0.0, 1.1) + xy(8.0, 4.0),
-        "(n·h)^s",
-        NOTE.colour(INK),
-    );
+    svg.text(at(0.0, 1.1) + xy(8.0, 4.0), "(n·h)^s", NOTE.colour(INK));
     svg.dashed(at(10.0, 0.0), at(10.0, 1.0), MUTED, 1.0);
     for (s, colour, label_at) in [(10.0, LIGHT, 26.0), (100.0, MEASURE, 13.0)] {
         let value = |angle: f64| angle.to_radians().cos().max(0.0).powf(s);
