@@ -261,7 +261,7 @@ fn schlick_curve() -> crate::svg::Drawn {
         380.0,
         "Schlick's approximation for glass",
         &format!(
-            "The share R that glass reflects, R(θ) = R₀ + (1 − R₀)(1 − cos θ)⁵, with \
+            "The share R that glass reflects by Schlick's approximation, with \
              R₀ = (0.5 / 2.5)² = 0.04 head-on. Entering glass from air, plotted against \
              the angle outside, it stays near 0.04 until about 60° and rises to 1 at 90°. \
              Leaving glass, plotted against the angle inside and computed with the angle \
@@ -334,9 +334,9 @@ fn schlick_curve() -> crate::svg::Drawn {
         &format!("R₀ = (0.5 / 2.5)² = {}", fixed(r0, 2)),
         NOTE.colour(INK),
     );
-    svg.fact(
+    svg.text(
         xy(300.0, 362.0),
-        "R(θ) = R₀ + (1 − R₀)(1 − cos θ)⁵",
+        "Schlick's R(θ), from R₀ head-on to 1 at grazing",
         LABEL.bold().middle(),
     );
     svg.finish()
