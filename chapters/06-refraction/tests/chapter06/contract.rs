@@ -34,7 +34,7 @@ fn head_on_rays_go_straight_through_and_never_give_nan() {
         for eta in [1.0 / 1.5, 1.5] {
             let d = -n;
             let got = refract(d, n, eta);
-            if !got.is_some_and(|out| out.is_finite() && (out - d).length() < 1e-5) {
+            if !got.is_some_and(|out| out.is_finite() && (out - d).length() < 1e-4) {
                 wrong.push((d, n, eta, got, -n.dot(d)));
             }
         }
@@ -44,9 +44,9 @@ fn head_on_rays_go_straight_through_and_never_give_nan() {
     };
     panic!(
         "{} of {} head-on rays (d = −N, random unit normals N) did not go straight through: \
-         refract({d}, {n}, η = {eta}) gave {got:?}, where cos θ₁ = −N·d = {cos} is a hair \
-         above 1 from rounding. It counts as 1 (refract's contract): a sin θ₁ = √(1 − cos²θ₁) \
-         of it, or a 1 − cos² below 0, is NaN",
+         refract({d}, {n}, η = {eta}) gave {got:?}, with cos θ₁ = −N·d = {cos}. Rounding \
+         can put cos θ₁ a hair above 1, and then it counts as 1 (refract's contract, so \
+         the answer is d again): a sin θ₁ = √(1 − cos²θ₁) of it, or a 1 − cos² below 0, is NaN",
         wrong.len(),
         2 * normals.len()
     );
