@@ -77,7 +77,7 @@ pub fn mirror_ray(surface: &Surface, incoming: &Ray, weight: Color) -> Option<Se
 /// * It does not check whether the light is in front of the surface:
 ///   chapter 3's `direct_light` asks only for lights with n·l > 0.
 pub fn highlight(surface: &Surface, incoming: &Incoming) -> Color {
-    // EXERCISE(ch05-highlight): Blinn–Phong: the specular weight times the light's irradiance times the cosine between the normal and the unit halfway vector of the directions to the light and to the eye, raised to the shininess
+    // EXERCISE(ch05-highlight): Blinn–Phong: the highlight of one light, from how far the halfway vector of the directions to the light and to the eye leans from the normal (README, Highlights)
     crate::workbench::exercise::solution_begins("ch05-highlight");
     let material = surface.material;
     if material.specular == 0.0 {

@@ -283,14 +283,14 @@ fn pixel_to_plane(camera: &Camera) -> crate::svg::Drawn {
     );
     let mid = left.y + h * cell / 2.0;
     svg.arrow(xy(282.0, mid), xy(322.0, mid), INK, 2.0);
-    svg.fact(
+    svg.text(
         xy(300.0, 320.0),
-        "u = (2·px / width − 1) · half_width",
+        "u: from −half_width (left) to half_width (right)",
         LABEL.middle(),
     );
-    svg.fact(
+    svg.text(
         xy(300.0, 346.0),
-        "v = (1 − 2·py / height) · half_height",
+        "v: from half_height (top) to −half_height (bottom)",
         LABEL.middle(),
     );
     svg.finish()

@@ -152,7 +152,7 @@ fn spot_cone() -> crate::svg::Drawn {
             "Left, the default scene's spot light above the floor: full light within \
              φ_i = {inner}° of its axis a, none beyond φ_o = {outer}°, and a smooth fall \
              in between. Right, the factor against the angle φ: 1 up to {inner}°, the \
-             smooth step 3s² − 2s³ down to 0 at {outer}°; at {middle}°, halfway in \
+             smooth step down to 0 at {outer}°; at {middle}°, halfway in \
              degrees, s ≈ {} and the factor is {}.",
             fixed(s as f64, 3),
             fixed(factor as f64, 3)
@@ -271,7 +271,7 @@ fn factor_plot(svg: &mut Svg, spot: (Vec3, f32, f32), middle: f32, s: f32, facto
     svg.text(at(26.0, 0.0) + xy(0.0, -10.0), "outside", NOTE.middle());
     svg.text(
         at(0.0, 0.0) + xy(0.0, 52.0),
-        "S(s) = 3s² − 2s³ between the cones",
+        "the smooth step S(s) between the cones",
         NOTE,
     );
 }

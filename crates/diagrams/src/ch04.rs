@@ -32,7 +32,7 @@ fn shadow_ray() -> crate::svg::Drawn {
         "The shadow ray: from just off the surface up to the light",
         "A point light p_L between a floor and a ceiling. From the floor point p, the \
          shadow ray starts at r0 and goes towards the light; it stops at the light, at \
-         t_max = |p_L − r0|, so the ceiling beyond the light, hit at t > t_max, casts no \
+         t_max, so the ceiling beyond the light, hit at t > t_max, casts no \
          shadow. From a second point, a ball between the point and the light, hit at \
          0 < t < t_max, blocks the light. The magnified circle shows why the ray starts \
          at r0 and not at p: the computed hit point p lies a hair below the true \
@@ -70,9 +70,9 @@ fn shadow_ray() -> crate::svg::Drawn {
         svg.text(beyond + xy(-14.0, 26.0 + 18.0 * i as f64), line, NOTE.end());
     }
     let along = r0 + (light - r0) * 0.45;
-    svg.fact(
+    svg.text(
         along + xy(14.0, 4.0),
-        "t_max = |p_L − r0|",
+        "t_max: at the light",
         LABEL.colour(LIGHT).bold(),
     );
     svg.text(r0 + xy(10.0, -8.0), "t = 0", NOTE.colour(INK));

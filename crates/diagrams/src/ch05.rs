@@ -171,8 +171,8 @@ fn half_vector() -> crate::svg::Drawn {
         340.0,
         "Blinn–Phong's halfway vector",
         "At a shiny point with the normal n, l points to the light and v to the eye. \
-         Their halfway vector h = (l + v) / |l + v| is the normal a mirror would need \
-         to send the light into the eye. The highlight is k_s · I_L · max(0, n·h)^s: \
+         Their halfway vector h is the normal a mirror would need \
+         to send the light into the eye. The highlight falls as h leans from n: \
          with h 10° off n it keeps 0.86 of the peak at s = 10 but only 0.22 at s = 100.",
     );
     svg.text(xy(20.0, 28.0), "The halfway vector h", HEADING);
@@ -219,14 +219,10 @@ fn half_vector() -> crate::svg::Drawn {
     );
     svg.text(
         hit + (l + v) * length + xy(-6.0, -6.0),
-        "l + v",
-        NOTE.math().end(),
+        "halfway",
+        NOTE.end(),
     );
-    svg.fact(
-        xy(20.0, 318.0),
-        "h = (l + v) / |l + v|",
-        LABEL.bold().math(),
-    );
+    svg.text(xy(20.0, 318.0), "h: halfway between l and v", LABEL.bold());
     falloff_plot(&mut svg);
     svg.finish()
 }
@@ -252,11 +248,7 @@ fn falloff_plot(svg: &mut Svg) {
         "angle between n and h",
         NOTE.colour(INK).middle(),
     );
-    svg.text(
-        at(0.0, 1.1) + xy(8.0, 4.0),
-        "max(0, n·h)^s",
-        NOTE.colour(INK),
-    );
+    svg.text(at(0.0, 1.1) + xy(8.0, 4.0), "(n·h)^s", NOTE.colour(INK));
     svg.dashed(at(10.0, 0.0), at(10.0, 1.0), MUTED, 1.0);
     for (s, colour, label_at) in [(10.0, LIGHT, 26.0), (100.0, MEASURE, 13.0)] {
         let value = |angle: f64| angle.to_radians().cos().max(0.0).powf(s);

@@ -151,18 +151,17 @@ fn refraction_split() -> crate::svg::Drawn {
     svg.fact(xy(left, 150.0), "η = n₁ / n₂", LABEL);
     svg.fact(xy(left, 174.0), "sin θ₂ = η sin θ₁", LABEL);
     svg.text(xy(left, 222.0), "the part across N, scaled:", NOTE);
-    svg.fact(
+    svg.text(
         xy(left, 244.0),
-        "across' = η (d + cos θ₁ N)",
+        "across': η times d's part across N",
         LABEL.colour(FRAME),
     );
-    svg.text(xy(left, 292.0), "with its part along N, −cos θ₂ N:", NOTE);
-    svg.text_with_fact(
-        xy(left, 314.0),
-        "d' = η d + (η cos θ₁ − cos θ₂) N",
-        "η d + (η cos θ₁ − cos θ₂) N",
-        LABEL.colour(REFRACT),
+    svg.text(
+        xy(left, 292.0),
+        "with its part along N, of length cos θ₂:",
+        NOTE,
     );
+    svg.text(xy(left, 314.0), "d', a unit vector", LABEL.colour(REFRACT));
     svg.finish()
 }
 
@@ -266,7 +265,7 @@ fn schlick_curve() -> crate::svg::Drawn {
         380.0,
         "Schlick's approximation for glass",
         &format!(
-            "The share R that glass reflects, R(θ) = R₀ + (1 − R₀)(1 − cos θ)⁵, with \
+            "The share R that glass reflects by Schlick's approximation, with \
              R₀ = (0.5 / 2.5)² = 0.04 head-on. Entering glass from air, plotted against \
              the angle outside, it stays near 0.04 until about 60° and rises to 1 at 90°. \
              Leaving glass, plotted against the angle inside and computed with the angle \
@@ -339,9 +338,9 @@ fn schlick_curve() -> crate::svg::Drawn {
         &format!("R₀ = (0.5 / 2.5)² = {}", fixed(r0, 2)),
         NOTE.colour(INK),
     );
-    svg.fact(
+    svg.text(
         xy(300.0, 362.0),
-        "R(θ) = R₀ + (1 − R₀)(1 − cos θ)⁵",
+        "Schlick's R(θ), from R₀ head-on to 1 at grazing",
         LABEL.bold().middle(),
     );
     svg.finish()

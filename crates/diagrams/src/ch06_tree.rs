@@ -200,9 +200,9 @@ pub fn diagram() -> Diagram {
         }
     }
     let foot = row_y(lines.len()) + 6.0;
-    svg.fact(
+    svg.text(
         xy(20.0, foot),
-        "The mirror ray gets ρ + T·R, the refracted ray T·(1 − R)",
+        "The mirror ray and the refracted ray share T by Schlick's R",
         NOTE.colour(INK),
     );
     let fresnel = glass.fresnel.expect("the glass has a Fresnel term");

@@ -41,3 +41,54 @@ fn taken_out() -> &'static [String] {
             .collect()
     })
 }
+
+/// The words by which a test's message blames an earlier exercise that the
+/// test builds on (see [`builds_on`]); `handout --check-mistakes` reads them.
+pub const BUILDS_ON: &str = "this test builds on exercise ";
+
+/// A test of a later exercise checks first the earlier exercise `id` that it
+/// builds on: when `right` is false, it fails here, naming `id` and saying
+/// what is wrong with it (`what`), instead of blaming its own exercise for
+/// the wrong number that `id` would hand on.
+#[track_caller]
+pub fn builds_on(id: &str, right: bool, what: impl std::fmt::Display) {
+    if !right {
+        panic!(
+            "{BUILDS_ON}{id}, and {id} is wrong: {what}. Fix {id} first; this test cannot judge its own exercise before."
+        );
+    }
+}
+
+/// The exercises that the messages in `output` blame through [`builds_on`].
+pub fn blamed_by_builds_on(output: &str) -> Vec<&str> {
+    output
+        .match_indices(BUILDS_ON)
+        .filter_map(|(at, _)| {
+            let rest = &output[at + BUILDS_ON.len()..];
+            rest.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+                .next()
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builds_on_names_the_earlier_exercise_and_check_reads_it_back() {
+        builds_on("ch03-spot", true, "never shown");
+        let message =
+            std::panic::catch_unwind(|| builds_on("ch03-spot", false, "cos of 10 radians"))
+                .unwrap_err()
+                .downcast::<String>()
+                .unwrap();
+        assert!(
+            message.contains("ch03-spot, and ch03-spot is wrong: cos of 10 radians"),
+            "{message}"
+        );
+        let output = format!("thread 'x' panicked:\n{message}\nand\n{message}");
+        assert_eq!(blamed_by_builds_on(&output), ["ch03-spot", "ch03-spot"]);
+        assert!(blamed_by_builds_on("nothing blamed").is_empty());
+    }
+}

@@ -5,11 +5,10 @@
 //! position), between two comment lines:
 //!
 //! ```text
-//! pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
-//!     // EXERCISE(ch03-lambert): the cosine law: what a matte surface of this albedo sends back of the incoming light, ...
-//!     crate::workbench::exercise::solution_begins("ch03-lambert");
-//!     let cos_theta = surface.normal.dot(incoming.direction).max(0.0);
-//!     surface.material.color * incoming.irradiance * cos_theta
+//! pub fn area(width: f32, height: f32) -> f32 {
+//!     // EXERCISE(ch00-area): the rectangle's area
+//!     crate::workbench::exercise::solution_begins("ch00-area");
+//!     width * height
 //!     // END EXERCISE
 //! }
 //! ```

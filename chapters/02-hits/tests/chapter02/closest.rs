@@ -2,7 +2,7 @@
 
 use ch02_hits::toolkit::Vec3;
 use ch02_hits::toolkit::scene::{Object, Shape};
-use ch02_hits::{Ray, closest_hit};
+use ch02_hits::{Ray, closest_hit, closest_hit_by};
 
 use super::{INF, scene};
 
@@ -69,5 +69,34 @@ fn the_nearest_object_wins_wherever_it_is_in_the_list() {
     assert!(
         closest_hit(&[], &ray, 0.0, INF).is_none(),
         "no objects, no hit"
+    );
+}
+
+#[test]
+fn a_later_object_replaces_the_hit_only_if_it_is_nearer() {
+    // Two spheres, the nearer first in the list: a fake `intersect` meets the
+    // one at x = 5 at t = 4, the one at x = 10 at t = 9 (inside the range it
+    // is asked about), and records the t_max it was given each time.
+    let ray = Ray::new(Vec3::ZERO, Vec3::X);
+    let objects = [sphere(5.0), sphere(10.0)];
+    let asked = std::cell::RefCell::new(Vec::new());
+    let fake = |shape: &Shape, _: &Ray, t_min: f32, t_max: f32| {
+        let Shape::Sphere { center, .. } = shape else {
+            unreachable!()
+        };
+        let t = center.x - 1.0;
+        asked.borrow_mut().push((t, t_max));
+        (t_min < t && t < t_max).then_some(t)
+    };
+    let hit = closest_hit_by(fake, &objects, &ray, 0.0, INF).expect("two spheres ahead");
+    let asked = asked.into_inner();
+    assert_eq!(
+        (hit.object, hit.t),
+        (0, 4.0),
+        "object 0 is met at t = 4, then object 1 at t = 9 (asked with t_max = {:?}): the \
+         later, farther hit replaced the nearer one. After a hit, only a nearer one may \
+         replace it: ask the next objects only up to the nearest t found so far (t_max \
+         shrinks), or keep a new hit only if its t is smaller",
+        asked.get(1).map(|(_, t_max)| *t_max)
     );
 }

@@ -2,7 +2,10 @@
 //! and `visible` asked only about the lights that could add something.
 
 use ch03_lambert::toolkit::{Color, Vec3};
-use ch03_lambert::{Incoming, Surface, always_visible, closest_hit, direct_light, lambert};
+use ch03_lambert::workbench::exercise::builds_on;
+use ch03_lambert::{
+    Incoming, Surface, always_visible, closest_hit, direct_light, lambert, spot_factor,
+};
 
 use super::{ALBEDO, close, floor_with};
 
@@ -56,7 +59,11 @@ const AMBIENTS: &str = r#"
 type Reflect<'a> = &'a dyn Fn(&Surface, &Incoming) -> Color;
 
 /// Chapter 3's direct light at the floor's point (0, 0, 0), with these
-/// `visible` and `reflect` (None: Lambert's law).
+/// `visible` and `reflect` (None: Lambert's law). The light loop builds on
+/// the chapter's two other exercises, so they are checked first at this
+/// point (`ch03-spot` for a spot among the lights, `ch03-lambert` when
+/// `reflect` is Lambert's law): a wrong factor there would otherwise be
+/// blamed on the loop.
 fn light_at_floor(
     lights: &str,
     visible: impl FnMut(&Surface, &Incoming) -> bool,
@@ -65,9 +72,55 @@ fn light_at_floor(
     let (scene, ray) = floor_with(lights);
     let hit = closest_hit(&scene.objects, &ray, 0.0, f32::INFINITY).unwrap();
     let surface = Surface::new(&scene, hit, &ray);
+    if lights.contains("spot") {
+        spot_misses_the_floor();
+    }
+    if reflect.is_none() {
+        lambert_is_right_at(&surface);
+    }
     match reflect {
         None => direct_light(&scene, &surface, visible, |i| lambert(&surface, i)),
         Some(f) => direct_light(&scene, &surface, visible, |i| f(&surface, i)),
+    }
+}
+
+/// `ch03-spot` first: [`SPOT_AWAY`]'s cone (axis +x, half-angles 10° and
+/// 20°) sends nothing straight down, 90° from its axis.
+fn spot_misses_the_floor() {
+    let down = Vec3::NEG_Y;
+    let factor = spot_factor(Vec3::X, 10.0, 20.0, down);
+    builds_on(
+        "ch03-spot",
+        factor == 0.0,
+        format_args!(
+            "spot_factor(axis +x, 10°, 20°, straight down) is {factor}, but a direction \
+             90° from the axis is outside the outer cone: 0 (the tests in `spot` say more)"
+        ),
+    );
+}
+
+/// `ch03-lambert` first, on light B's numbers at the floor (n·l = 0.8,
+/// irradiance (1, 0.5, 0.25)) and on light from below (nothing).
+fn lambert_is_right_at(surface: &Surface) {
+    let incoming = |direction: Vec3| Incoming {
+        direction,
+        distance: 5.0,
+        irradiance: Color::new(1.0, 0.5, 0.25),
+        casts_shadows: true,
+    };
+    for (direction, want) in [
+        (Vec3::new(0.6, 0.8, 0.0), ALBEDO * Vec3::new(0.8, 0.4, 0.2)),
+        (Vec3::new(0.6, -0.8, 0.0), Color::ZERO),
+    ] {
+        let got = lambert(surface, &incoming(direction));
+        builds_on(
+            "ch03-lambert",
+            close(got, want),
+            format_args!(
+                "at the floor, light of irradiance (1, 0.5, 0.25) from {direction} should \
+                 give {want}, lambert gave {got} (the tests in `lambert` say more)"
+            ),
+        );
     }
 }
 

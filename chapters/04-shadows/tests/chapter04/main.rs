@@ -2,12 +2,15 @@
 
 use ch03_lambert::scene_files;
 use ch03_lambert::{Arrival, arrival};
-use ch04_shadows::toolkit::scene::{Light, Object, Shape};
+use ch04_shadows::toolkit::scene::{Light, Shape};
 use ch04_shadows::toolkit::{Image, Scene, Stats, Vec3};
 use ch04_shadows::{
     CHAPTER, Incoming, Ray, ShadowStart, Surface, any_hit, closest_hit, light_is_free,
     offset_origin, render_shadows, shadow_ray,
 };
+
+/// The earlier exercises, checked first by the tests that build on them.
+mod earlier;
 
 fn render(scene: &Scene, origin: ShadowStart) -> Image {
     render_shadows(scene, origin, || {}).0
@@ -64,12 +67,16 @@ fn acne(pixels: usize) -> String {
 
 #[test]
 fn no_acne_on_a_floor_lit_at_a_grazing_angle() {
+    earlier::offset_first();
+    earlier::any_hit_first();
     let pixels = shadowed_pixels(&grazing_floor(), ShadowStart::Offset);
     assert_eq!(pixels, 0, "{}", acne(pixels));
 }
 
 #[test]
 fn no_acne_on_the_same_floor_far_from_the_origin() {
+    earlier::offset_first();
+    earlier::any_hit_first();
     let far = grazing_floor().translated(Vec3::new(1e4, 0.0, 1e4));
     let pixels = shadowed_pixels(&far, ShadowStart::Offset);
     assert_eq!(pixels, 0, "{}", acne(pixels));
@@ -77,12 +84,16 @@ fn no_acne_on_the_same_floor_far_from_the_origin() {
 
 #[test]
 fn no_acne_on_a_sphere_far_from_the_origin() {
+    earlier::offset_first();
+    earlier::any_hit_first();
     let pixels = shadowed_pixels(&far_sphere(), ShadowStart::Offset);
     assert_eq!(pixels, 0, "{}", acne(pixels));
 }
 
 #[test]
 fn without_the_offset_the_same_scenes_show_acne() {
+    earlier::offset_first();
+    earlier::any_hit_first();
     // The three tests above could fail: here is the failure they guard against.
     let floor = shadowed_pixels(&grazing_floor(), ShadowStart::HitPoint);
     let far_floor = shadowed_pixels(
@@ -104,19 +115,10 @@ fn without_the_offset_the_same_scenes_show_acne() {
 #[test]
 fn the_offset_moves_to_the_lights_side_and_scales_with_magnitude() {
     // A unit sphere near the origin and one far from it, hit from above.
-    let hit_top = |center: Vec3| {
-        let sphere = [Object {
-            shape: Shape::Sphere {
-                center,
-                radius: 1.0,
-            },
-            material: 0,
-            shadows: true,
-        }];
-        let ray = Ray::new(center + Vec3::new(0.0, 5.0, 0.0), Vec3::NEG_Y);
-        ch04_shadows::closest_hit(&sphere, &ray, 0.0, f32::INFINITY).unwrap()
-    };
-    let (near, far) = (hit_top(Vec3::ZERO), hit_top(Vec3::splat(1e4)));
+    let ([near, _], [far, _]) = (
+        earlier::hits_at(Vec3::ZERO),
+        earlier::hits_at(Vec3::splat(1e4)),
+    );
     let moved = |hit: &ch04_shadows::Hit| offset_origin(hit, Vec3::Y).y - hit.point.y;
     assert!(
         moved(&near) > 0.0,
@@ -278,6 +280,7 @@ fn floor_and_ceiling() -> Scene {
 
 #[test]
 fn a_blocker_beyond_the_light_casts_no_shadow() {
+    earlier::all_but_light_is_free();
     let scene = floor_and_ceiling();
     let (shadowed, stats) = render_shadows(&scene, ShadowStart::Offset, || {});
     let free = unshadowed(&scene);
@@ -295,13 +298,14 @@ fn a_blocker_beyond_the_light_casts_no_shadow() {
     assert_eq!(
         darker, 0,
         "{darker} pixels of floor and ceiling are darkened by the other plane, on the far \
-         side of the light: the shadow ray went beyond the light (t_max is the distance \
-         to the light)"
+         side of the light: the shadow ray went beyond the light, though shadow_ray's \
+         t_max is right (checked first): light_is_free must ask any_hit up to that t_max"
     );
 }
 
 #[test]
 fn a_blocker_just_before_the_light_casts_a_shadow() {
+    earlier::all_but_light_is_free();
     // A light 4 above the floor, a small ball 3.5 to 3.9 above it: from the
     // floor point below, the ball covers the last eighth of the way. Its
     // shadow on the floor is a disc of radius 3.6.
@@ -361,6 +365,7 @@ fn a_blocker_just_before_the_light_casts_a_shadow() {
 
 #[test]
 fn objects_that_opt_out_cast_no_shadow() {
+    earlier::all_but_light_is_free();
     let mut scene = CHAPTER.default_scene().unwrap().with_size(80, 60);
     for object in &mut scene.objects {
         object.shadows = false;
@@ -380,6 +385,7 @@ fn objects_that_opt_out_cast_no_shadow() {
 
 #[test]
 fn lights_that_opt_out_trace_no_shadow_ray() {
+    earlier::all_but_light_is_free();
     let mut scene = CHAPTER.default_scene().unwrap().with_size(80, 60);
     for light in &mut scene.lights {
         if let Light::Point { shadows, .. } | Light::Spot { shadows, .. } = light {
@@ -399,6 +405,7 @@ fn lights_that_opt_out_trace_no_shadow_ray() {
 
 #[test]
 fn the_box_keeps_its_light_inside() {
+    earlier::all_but_light_is_free();
     let scene = scene_file("box.toml").with_size(80, 60);
     let Some(&Light::Ambient { color: ambient }) = scene.lights.first() else {
         panic!("the box scene starts with its ambient light")

@@ -16,6 +16,8 @@
 //!
 //! Here: the mirror floor the first three share, and the rays that hit it.
 
+/// The exercises later ones build on, checked first.
+mod earlier;
 mod highlight;
 mod mirror;
 mod pictures;

@@ -48,6 +48,7 @@ fn the_mirror_law_does_not_care_which_way_the_normal_points() {
 
 #[test]
 fn the_mirror_ray_leaves_at_the_mirror_angle_from_just_above_the_surface() {
+    super::earlier::reflect_first();
     let scene = floor();
     let s = 0.5f32.sqrt();
     let incoming = arriving(Vec3::new(s, -s, 0.0));

@@ -63,6 +63,7 @@ fn count(n: u32, thing: &str) -> String {
 
 /// Renders with chapter 5's tracer, once the recursion is known to end.
 fn render(scene: &Scene) -> (Image, Stats) {
+    super::earlier::the_local_parts_first();
     assert_the_recursion_is_sound();
     render_mirrors(scene, || {})
 }

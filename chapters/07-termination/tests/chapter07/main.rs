@@ -3,6 +3,7 @@
 
 use ch07_termination::scene_files;
 use ch07_termination::toolkit::{Color, Scene, Vec3};
+use ch07_termination::workbench::exercise::builds_on;
 use ch07_termination::workbench::snapshot::assert_image;
 use ch07_termination::{
     CHAPTER, Glass, Mirrors, Termination, below_threshold, render_terminated, render_whitted,
@@ -13,12 +14,36 @@ fn mirrors(reflectance: f32) -> Scene {
 }
 
 /// Two facing mirrors of `reflectance` (per channel): every ray hits one.
+/// The tests that render them judge `may_trace`, so they check
+/// `below_threshold` first.
 fn mirrors_of(reflectance: Color) -> Scene {
+    below_threshold_first();
     let mut scene = scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mirrors.toml"))
         .unwrap()
         .with_size(40, 30);
     scene.materials[0].reflectance = reflectance;
     scene
+}
+
+/// `ch07-below-threshold`, which `may_trace` builds on: below 0.1 only when
+/// every channel is, and a channel equal to 0.1 is not below it.
+fn below_threshold_first() {
+    for (weight, below) in [
+        (Color::splat(0.05), true),
+        (Color::new(0.2, 0.0, 0.0), false),
+        (Color::new(0.0, 0.0, 0.3), false),
+        (Color::new(0.1, 0.0, 0.0), false),
+    ] {
+        let got = below_threshold(weight, 0.1);
+        builds_on(
+            "ch07-below-threshold",
+            got == below,
+            format_args!(
+                "below_threshold({weight}, 0.1) gave {got}, want {below} (the test \
+                 a_weight_is_below_the_threshold_only_if_every_channel_is says more)"
+            ),
+        );
+    }
 }
 
 /// "1 bounce", "2 bounces": `n` of `thing`, in words that read.
@@ -244,6 +269,7 @@ fn a_threshold_of_zero_changes_nothing_a_high_one_cuts_reflections() {
 
 #[test]
 fn snapshot_default() {
+    below_threshold_first();
     let scene = CHAPTER.default_scene().unwrap().with_size(160, 120);
     let (image, _) = render_terminated(&scene, Termination::of(&scene), || {});
     assert_image("07-termination", "default", &image);

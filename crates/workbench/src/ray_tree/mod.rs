@@ -219,7 +219,7 @@ pub struct LightNode {
     pub casts_shadows: Option<bool>,
     /// The shadow ray traced towards it, if one was.
     pub shadow_ray: Option<ShadowNode>,
-    /// k_d · I_L · max(0, n·l).
+    /// Lambert's term of this light (chapter 3's `lambert`).
     pub lambert: Option<[f32; 3]>,
     /// The Blinn–Phong highlight (chapter 5 on).
     pub highlight: Option<[f32; 3]>,

@@ -194,6 +194,10 @@ pub struct Mistake {
     pub expect: String,
     /// The region's body with the mistake in it.
     pub body: String,
+    /// Messages that would send the student to another exercise, which no
+    /// test may print for this mistake (a misdirection once seen).
+    #[serde(default)]
+    pub not_said: Vec<String>,
 }
 
 /// The lecture's own method for an exercise, written as a student would.
@@ -235,6 +239,9 @@ pub enum Caught {
     Named,
     /// Tests failed, but none said `expect`.
     Unnamed,
+    /// A test blamed another exercise, one that the mistake left right
+    /// (through `workbench::exercise::builds_on`): these ids.
+    Misblamed(Vec<String>),
     /// Every test passed: the mistake goes unnoticed.
     Missed,
     /// The mistaken body does not compile (the entry is wrong).
@@ -249,11 +256,28 @@ pub fn replay(check: &Check, chapter: &ChapterEntry, mistake: &Mistake) -> Resul
         Caught::NoBuild(error)
     } else if ok {
         Caught::Missed
+    } else if let Some(wrong) = blamed_elsewhere(&text, &mistake.exercise) {
+        Caught::Misblamed(wrong)
+    } else if let Some(said) = mistake.not_said.iter().find(|m| text.contains(m.as_str())) {
+        Caught::Misblamed(vec![format!("another exercise (a test said {said:?})")])
     } else if text.contains(&mistake.expect) {
         Caught::Named
     } else {
         Caught::Unnamed
     })
+}
+
+/// The exercises other than `exercise` that a failing test's message blames
+/// as the earlier exercise it builds on, if any: a mistake in `exercise`
+/// alone must make no test blame another one.
+fn blamed_elsewhere(output: &str, exercise: &str) -> Option<Vec<String>> {
+    let mut wrong: Vec<String> = crate::workbench::exercise::blamed_by_builds_on(output)
+        .into_iter()
+        .filter(|id| *id != exercise)
+        .map(str::to_owned)
+        .collect();
+    wrong.dedup();
+    (!wrong.is_empty()).then_some(wrong)
 }
 
 /// Writes the lecture's methods (the `[[lecture]]` solutions) into their
@@ -344,7 +368,17 @@ fn without_linker_commands(output: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::without_linker_commands;
+    use super::{blamed_elsewhere, without_linker_commands};
+
+    #[test]
+    fn a_test_that_blames_an_exercise_left_right_is_found() {
+        let output = "panicked: this test builds on exercise ch03-spot, and ch03-spot is wrong: x";
+        assert_eq!(blamed_elsewhere(output, "ch03-spot"), None);
+        assert_eq!(
+            blamed_elsewhere(output, "ch03-light-loop"),
+            Some(vec!["ch03-spot".to_owned()])
+        );
+    }
 
     #[test]
     fn a_failed_link_shows_the_linkers_reason_not_its_command() {

@@ -141,6 +141,12 @@ fn check_mistakes(only: &str) -> Result<(), String> {
             let verdict = match &caught {
                 Caught::Named => "caught, named".to_owned(),
                 Caught::Unnamed => format!("caught, but no test says {:?}", mistake.expect),
+                Caught::Misblamed(ids) => {
+                    format!(
+                        "MISBLAMED: a test says the mistake is in {}",
+                        ids.join(", ")
+                    )
+                }
                 Caught::Missed => "MISSED: every test passes".to_owned(),
                 Caught::NoBuild(e) => format!("MISSED: does not compile: {e}"),
             };
