@@ -87,6 +87,17 @@ pub const GRADER: &str = "crates/grade";
 /// into each student's copy itself.
 pub const PROBE: &str = "crates/grade-probe";
 
+/// A lock file without the teacher's packages (`grade`, `grade-probe`):
+/// what cargo itself writes in a workspace that holds neither. A handout
+/// ships it so, so that its first build does not rewrite the lock (which
+/// the grader would take for an edit).
+pub fn lock_without_teacher(lock: &str) -> String {
+    let teacher = ["name = \"grade\"\n", "name = \"grade-probe\"\n"];
+    let blocks = lock.split("\n[[package]]\n");
+    let kept = blocks.filter(|b| !teacher.iter().any(|t| b.starts_with(t)));
+    kept.collect::<Vec<_>>().join("\n[[package]]\n")
+}
+
 /// Copies the workspace at `root` into `dir`, without the files that are
 /// [`teacher_only`], and with the selected exercise regions of every `.rs`
 /// file taken out (see [`crate::regions::hand_out`]).
@@ -117,7 +128,9 @@ pub fn write_tree_with(
         }
         let from = root.join(&file);
         let bytes = std::fs::read(&from).map_err(|e| format!("{}: {e}", from.display()))?;
-        let bytes = if holds_exercises(&file) {
+        let bytes = if file == Path::new("Cargo.lock") {
+            lock_without_teacher(&String::from_utf8_lossy(&bytes)).into_bytes()
+        } else if holds_exercises(&file) {
             let (out, replaced) = replace_in_file(&file, bytes, &mut ids, &body)?;
             written.regions.extend(replaced);
             out
