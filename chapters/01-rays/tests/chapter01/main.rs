@@ -326,8 +326,16 @@ fn a_seed_jitters_every_ray_the_same_way_on_any_number_of_threads() {
             on(&seeded(1), 2).to_png(),
             "seed 1, {samples} samples: 1 and 2 threads"
         );
-        assert_ne!(one.pixels, on(&seeded(2), 1).pixels, "seeds 1 and 2, {samples} samples");
-        assert_ne!(one.pixels, on(&unseeded, 1).pixels, "seed 1 and none, {samples} samples");
+        assert_ne!(
+            one.pixels,
+            on(&seeded(2), 1).pixels,
+            "seeds 1 and 2, {samples} samples"
+        );
+        assert_ne!(
+            one.pixels,
+            on(&unseeded, 1).pixels,
+            "seed 1 and none, {samples} samples"
+        );
     }
 }
 
@@ -340,10 +348,19 @@ fn a_seeded_stream_differs_from_seed_to_seed_and_pixel_to_pixel() {
     let mut distinct = streams.clone();
     distinct.sort_unstable();
     distinct.dedup();
-    assert_eq!(distinct.len(), streams.len(), "4 seeds × 64 pixels, all distinct");
+    assert_eq!(
+        distinct.len(),
+        streams.len(),
+        "4 seeds × 64 pixels, all distinct"
+    );
     // One jittered sample lands anywhere in the pixel, not at its centre.
-    let one: Vec<(f32, f32)> = (0..8).flat_map(|s| jittered_positions(3, 5, 1, s)).collect();
-    assert!(one.iter().all(|&(x, y)| (3.0..4.0).contains(&x) && (5.0..6.0).contains(&y)));
+    let one: Vec<(f32, f32)> = (0..8)
+        .flat_map(|s| jittered_positions(3, 5, 1, s))
+        .collect();
+    assert!(
+        one.iter()
+            .all(|&(x, y)| (3.0..4.0).contains(&x) && (5.0..6.0).contains(&y))
+    );
     assert!(one.iter().any(|&p| p != (3.5, 5.5)), "{one:?}");
 }
 
