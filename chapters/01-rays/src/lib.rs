@@ -163,11 +163,25 @@ pub fn sample_positions(
 ) -> impl Iterator<Item = (f32, f32)> {
     let side = samples.isqrt(); // samples is a square: N = side²
     // One sample needs no random numbers: it is the centre.
-    let mut rng = (side > 1).then(|| Pcg64Mcg::seed_from_u64(index));
+    let centre = (side == 1).then_some((x as f32 + 0.5, y as f32 + 0.5));
+    let jittered = (side > 1).then(|| jittered_positions(x, y, samples, index));
+    centre.into_iter().chain(jittered.into_iter().flatten())
+}
+
+/// [`sample_positions`] without the exception for one sample: N positions,
+/// one at a random point of each cell of a √N × √N grid over pixel (x, y),
+/// drawn from the random-number stream `stream`. One sample is a random
+/// point of the whole pixel, so that the average of many renders with
+/// different streams is the pixel's mean colour, whatever N.
+pub fn jittered_positions(
+    x: u32,
+    y: u32,
+    samples: u32,
+    stream: u64,
+) -> impl Iterator<Item = (f32, f32)> {
+    let side = samples.isqrt().max(1); // samples is a square: N = side²
+    let mut rng = Pcg64Mcg::seed_from_u64(stream);
     (0..side * side).map(move |cell| {
-        let Some(rng) = rng.as_mut() else {
-            return (x as f32 + 0.5, y as f32 + 0.5);
-        };
         let (i, j) = (cell % side, cell / side);
         let u: f32 = rng.random();
         let v: f32 = rng.random();
@@ -178,10 +192,28 @@ pub fn sample_positions(
     })
 }
 
+/// The random-number stream of pixel `index` under `--seed seed`: the two
+/// mixed into one number by SplitMix64's finaliser (Steele, Lea and Flood,
+/// 2014), so that each (seed, pixel) pair gets a stream of its own, unlike
+/// any seed's other pixels, and any thread draws the same numbers for it.
+pub fn seeded_stream(seed: u64, index: u64) -> u64 {
+    let mix = |mut z: u64| {
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    };
+    mix(mix(seed.wrapping_add(0x9e37_79b9_7f4a_7c15)) ^ index)
+}
+
 /// Renders a scene with the scene's number of primary rays per pixel
 /// (`[image] samples`, one by default): `trace` gives the colour seen along
 /// a ray, and a pixel is the average over its rays. Every later chapter
 /// renders through this function and only brings a better `trace`.
+///
+/// Where the rays go: without a seed (`scene.image.seed`, `--seed`),
+/// [`sample_positions`] of the pixel's index; with one,
+/// [`jittered_positions`] of a [`seeded_stream`], so that renders with
+/// different seeds are independent estimates of the same picture.
 pub fn render(
     scene: &Scene,
     trace: impl Fn(&Ray, &mut Stats) -> Color + Sync,
@@ -190,20 +222,29 @@ pub fn render(
     let (width, height) = (scene.image.width, scene.image.height);
     let samples = scene.image.samples.max(1);
     let camera = Camera::new(&scene.camera, width, height);
-    let pixel = |x, y, stats: &mut Stats| {
-        if samples == 1 {
-            // One ray, through the pixel's centre: no positions to draw
-            // and no average to take.
-            stats.primary += 1;
-            return trace(&camera.primary_ray(x, y), stats);
-        }
-        let index = y as u64 * width as u64 + x as u64;
+    let average = |positions: &mut dyn Iterator<Item = (f32, f32)>, stats: &mut Stats| {
         let mut sum = Color::ZERO;
-        for (px, py) in sample_positions(x, y, samples, index) {
+        for (px, py) in positions {
             stats.primary += 1;
             sum += trace(&camera.ray_through(px, py), stats);
         }
         sum / samples as f32
+    };
+    let pixel = |x, y, stats: &mut Stats| {
+        let index = y as u64 * width as u64 + x as u64;
+        match scene.image.seed {
+            // One ray, through the pixel's centre: no positions to draw
+            // and no average to take.
+            None if samples == 1 => {
+                stats.primary += 1;
+                trace(&camera.primary_ray(x, y), stats)
+            }
+            None => average(&mut sample_positions(x, y, samples, index), stats),
+            Some(seed) => {
+                let stream = seeded_stream(seed, index);
+                average(&mut jittered_positions(x, y, samples, stream), stats)
+            }
+        }
     };
     Image::render(width, height, pixel, on_row)
 }

@@ -45,6 +45,12 @@ pub struct ImageSpec {
     pub background: Color,
     /// Rays per pixel (anti-aliasing, chapter 1): a square number.
     pub samples: u32,
+    /// Where the random positions of the rays in a pixel come from
+    /// (`--seed`, chapter 1's `render`). `None`, as a scene file gives:
+    /// from the pixel's index alone, and one ray goes through the centre.
+    /// `Some(seed)`: from the seed and the index, every ray at a random
+    /// point of its cell, one ray too; another seed gives other positions.
+    pub seed: Option<u64>,
 }
 
 /// Chapter 7's termination criteria and the effects switched on.

@@ -303,6 +303,67 @@ fn n_samples_trace_n_primary_rays_and_average_them() {
     assert_eq!(image, again, "the same scene renders to the same picture");
 }
 
+/// `--seed N`: every ray at a random point of its cell, one ray too; the
+/// same seed gives the same bytes on any number of threads, another seed
+/// another picture, and no seed keeps the picture of the snapshots.
+#[test]
+fn a_seed_jitters_every_ray_the_same_way_on_any_number_of_threads() {
+    use ch01_rays::workbench::cli::with_threads;
+    for samples in [1, 4] {
+        let mut unseeded = scene().with_size(40, 30);
+        unseeded.image.samples = samples;
+        let seeded = |seed| {
+            let mut scene = unseeded.clone();
+            scene.image.seed = Some(seed);
+            scene
+        };
+        let on = |scene: &Scene, threads| {
+            with_threads(Some(threads), || render_sky(scene, || {}).0).unwrap()
+        };
+        let one = on(&seeded(1), 1);
+        assert_eq!(
+            one.to_png(),
+            on(&seeded(1), 2).to_png(),
+            "seed 1, {samples} samples: 1 and 2 threads"
+        );
+        assert_ne!(
+            one.pixels,
+            on(&seeded(2), 1).pixels,
+            "seeds 1 and 2, {samples} samples"
+        );
+        assert_ne!(
+            one.pixels,
+            on(&unseeded, 1).pixels,
+            "seed 1 and none, {samples} samples"
+        );
+    }
+}
+
+#[test]
+fn a_seeded_stream_differs_from_seed_to_seed_and_pixel_to_pixel() {
+    use ch01_rays::{jittered_positions, seeded_stream};
+    let streams: Vec<u64> = (0..4)
+        .flat_map(|seed| (0..64).map(move |pixel| seeded_stream(seed, pixel)))
+        .collect();
+    let mut distinct = streams.clone();
+    distinct.sort_unstable();
+    distinct.dedup();
+    assert_eq!(
+        distinct.len(),
+        streams.len(),
+        "4 seeds × 64 pixels, all distinct"
+    );
+    // One jittered sample lands anywhere in the pixel, not at its centre.
+    let one: Vec<(f32, f32)> = (0..8)
+        .flat_map(|s| jittered_positions(3, 5, 1, s))
+        .collect();
+    assert!(
+        one.iter()
+            .all(|&(x, y)| (3.0..4.0).contains(&x) && (5.0..6.0).contains(&y))
+    );
+    assert!(one.iter().any(|&p| p != (3.5, 5.5)), "{one:?}");
+}
+
 /// The text's Rust listings, each a test, and the check that the text
 /// shows them as they are here.
 mod listings;

@@ -1,149 +1,232 @@
-//! Rendering each setting, timing it, and measuring its picture's error
-//! against the knob's reference.
+//! Rendering the rows: each setting rendered once per seed, the settings
+//! taken in turn within each round (interleaved, so that a slow spell of
+//! the machine falls on every row alike rather than on a few), each render
+//! timed and compared with the one reference.
 
 use std::time::Instant;
 
-use indicatif::ProgressBar;
-
-use super::settings::{Knob, Setting, all_settings};
-use crate::bench::median;
 use raybook::toolkit::scene::Effects;
 use raybook::toolkit::{Color, Image, Scene};
-use raybook::tracer::render_complete;
-use raybook::workbench::compare::{psnr, rmse_clamped};
+use raybook::tracer::{Termination, render_complete, render_terminated};
 
-/// How a setting did: what it cost, and how far its picture is from its
-/// knob's reference.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Measurement {
-    /// The setting measured.
-    pub setting: Setting,
-    /// Median wall time of the renders, building the BVH included.
-    pub seconds: f64,
-    /// Rays traced (all kinds) by one render.
+use super::metrics::{self, Errors};
+use super::settings::{Sampling, Setting, Tracer};
+
+/// One render: its picture, the rays it traced and how long it took.
+pub struct Rendered {
+    pub image: Image,
+    /// Rays of every kind traced.
     pub rays: u64,
-    /// Against the knob's reference, in linear RGB clamped to [0, 1].
-    pub rmse: f64,
-    /// The peak signal-to-noise ratio of `rmse`, in dB; infinite for an
-    /// exact match.
-    pub psnr: f64,
-    /// The largest difference of any channel of any pixel.
-    pub max_error: f64,
-    /// The share of pixels with some channel off by more than 1/255.
-    pub share_off: f64,
+    /// Wall time of building the BVH and rendering, as `raybook render`
+    /// spends it.
+    pub seconds: f64,
 }
 
-/// How much to measure.
-#[derive(Debug, Clone, Copy)]
-pub struct Options {
-    /// Picture width in pixels.
-    pub width: u32,
-    /// Picture height in pixels.
-    pub height: u32,
-    /// Renders per setting; the median time counts.
-    pub runs: usize,
-    /// Fewer settings and fewer samples, for a look in under 30 seconds.
-    pub quick: bool,
-}
-
-/// Runs the whole measurement on `scene`, moving `bar` on a setting at a
-/// time.
-pub fn run(scene: &Scene, options: Options, bar: &ProgressBar) -> Vec<Measurement> {
-    let scene = scene.clone().with_size(options.width, options.height);
-    let settings = all_settings(options.quick);
-    bar.set_length(settings.len() as u64);
-    sweep(&scene, &settings, options.runs, || bar.inc(1))
-}
-
-/// Measures every setting of `settings`, each against the last setting of
-/// its knob (the most accurate). `tick` is called after each setting.
-pub fn sweep(
-    scene: &Scene,
-    settings: &[Setting],
-    runs: usize,
-    tick: impl Fn(),
-) -> Vec<Measurement> {
-    let mut measurements = Vec::with_capacity(settings.len());
-    for knob in Knob::ALL {
-        let group: Vec<&Setting> = settings.iter().filter(|s| s.knob == knob).collect();
-        let Some(reference) = group.last() else {
-            continue;
-        };
-        let reference = render(scene, reference, 1).image;
-        for setting in group {
-            let rendered = render(scene, setting, runs);
-            measurements.push(compare(setting, &reference, &rendered));
-            tick();
-        }
-    }
-    measurements
-}
-
-/// A setting's picture, with what it cost.
-struct Rendered {
-    image: Image,
-    /// Rays traced by one render.
-    rays: u64,
-    /// The median wall time of the renders.
-    seconds: f64,
-}
-
-/// The scene as a setting renders it.
-fn scene_for(scene: &Scene, setting: &Setting) -> Scene {
+/// The scene as `setting` renders it: its effects, its rays per pixel, and
+/// `seed` for the positions of the rays (`None` for the centre ray).
+pub fn scene_for(scene: &Scene, setting: &Setting, seed: Option<u64>) -> Scene {
     let mut scene = scene.clone().without(Effects::ALL.minus(setting.effects));
-    scene.image.samples = setting.samples;
+    scene.image.samples = setting.sampling.samples();
+    scene.image.seed = match setting.sampling {
+        Sampling::Centre => None,
+        Sampling::Jittered(_) => seed,
+    };
     scene
 }
 
-/// Renders a setting `runs` times (at least once) with the complete tracer,
-/// as `raybook render` does: the four-wide BVH's build ([`raybook::world`])
-/// and the render, timed together.
-fn render(scene: &Scene, setting: &Setting, runs: usize) -> Rendered {
-    let scene = scene_for(scene, setting);
-    let mut seconds = Vec::with_capacity(runs);
-    let mut last = None;
-    for _ in 0..runs.max(1) {
-        let start = Instant::now();
-        let bvh = raybook::world(&scene);
-        let (image, stats) = render_complete(&scene, &bvh, setting.termination, || {});
-        seconds.push(start.elapsed().as_secs_f64());
-        last = Some((image, stats.rays()));
-    }
-    let (image, rays) = last.expect("at least one run");
+/// Renders `setting` once with its tracer (for the complete one, the
+/// four-wide BVH's build and the render, timed together), `on_row` called
+/// per row.
+pub fn render_timed(
+    scene: &Scene,
+    setting: &Setting,
+    seed: Option<u64>,
+    on_row: &(dyn Fn() + Sync),
+) -> Rendered {
+    let scene = scene_for(scene, setting, seed);
+    let start = Instant::now();
+    let (image, stats) = match setting.tracer {
+        Tracer::Complete => {
+            let bvh = raybook::world(&scene);
+            render_complete(&scene, &bvh, setting.termination, on_row)
+        }
+        Tracer::Chapter7 => render_terminated(&scene, setting.termination, on_row),
+    };
     Rendered {
         image,
-        rays,
-        seconds: median(seconds),
+        rays: stats.rays(),
+        seconds: start.elapsed().as_secs_f64(),
     }
 }
 
-/// How `rendered`, made with `setting`, did against the `reference` picture.
-fn compare(setting: &Setting, reference: &Image, rendered: &Rendered) -> Measurement {
-    let rmse = rmse_clamped(reference, &rendered.image);
-    let (max_error, share_off) = pixel_errors(reference, &rendered.image);
-    Measurement {
-        setting: setting.clone(),
-        seconds: rendered.seconds,
-        rays: rendered.rays,
-        rmse,
-        psnr: psnr(rmse),
-        max_error,
-        share_off,
-    }
+/// A setting's renders, one per seed, against the reference.
+#[derive(Debug, Clone)]
+pub struct Row {
+    pub setting: Setting,
+    /// Rays traced by one render (the mean over the seeds).
+    pub rays: u64,
+    /// The wall time of each render, in the order rendered.
+    pub seconds: Vec<f64>,
+    /// The errors of each render.
+    pub errors: Vec<Errors>,
+    /// The squared bias: how far the mean over the seeds is from the
+    /// reference, less what the seeds' noise adds to that distance.
+    pub bias2: f64,
+    /// The variance: how far each render is from the mean of the seeds.
+    pub variance: f64,
 }
 
-/// The largest channel difference, and the share of pixels off by more
-/// than 1/255, of two pictures as a PNG shows them (clamped to [0, 1]).
-fn pixel_errors(reference: &Image, image: &Image) -> (f64, f64) {
-    let clamp = |c: Color| c.clamp(Color::ZERO, Color::ONE);
-    let mut largest = 0.0f64;
-    let mut off = 0usize;
-    for (&a, &b) in reference.pixels.iter().zip(&image.pixels) {
-        let d = f64::from((clamp(a) - clamp(b)).abs().max_element());
-        largest = largest.max(d);
-        if d > 1.0 / 255.0 {
-            off += 1;
+/// What accumulates over a row's renders: the sum of its pictures and of
+/// its MSEs, for the bias and variance split.
+struct Tally {
+    sum: Vec<Color>,
+    rays: u64,
+    seconds: Vec<f64>,
+    errors: Vec<Errors>,
+}
+
+/// Renders every one of `settings` `seeds` times (seeds 1, 2, …; a row
+/// without randomness is rendered as often, for its time), compares each
+/// render with `reference`, and splits each row's error into bias² and
+/// variance. `keep(setting)` says which rows' first pictures to hand back
+/// (for the error maps); `on_row(setting)` is called per row of pixels
+/// rendered.
+///
+/// Round k renders every setting with seed k, each round starting at a
+/// different setting, so that each setting's renders fall at different
+/// moments of the study. Call [`warm_up`] first: no render here is
+/// untimed.
+pub fn measure_rows(
+    scene: &Scene,
+    settings: &[Setting],
+    seeds: u32,
+    reference: &Image,
+    keep: impl Fn(&Setting) -> bool,
+    on_row: &(dyn Fn(&Setting) + Sync),
+) -> (Vec<Row>, Vec<(Setting, Image)>) {
+    let mut tallies: Vec<Tally> = settings.iter().map(|_| Tally::new()).collect();
+    let mut kept = Vec::new();
+    let n = settings.len();
+    for round in 0..seeds as usize {
+        let seed = round as u64 + 1;
+        let first = round * n / seeds as usize;
+        for i in (0..n).map(|k| (first + k) % n) {
+            let setting = &settings[i];
+            let rendered = render_timed(scene, setting, Some(seed), &|| on_row(setting));
+            if round == 0 && keep(setting) {
+                kept.push((*setting, rendered.image.clone()));
+            }
+            tallies[i].add(rendered, reference);
         }
     }
-    (largest, off as f64 / reference.pixels.len().max(1) as f64)
+    let rows = settings
+        .iter()
+        .zip(tallies)
+        .map(|(setting, tally)| tally.row(*setting, reference))
+        .collect();
+    (rows, kept)
+}
+
+/// The primary rays `settings` trace in one render each at `width` ×
+/// `height`.
+pub fn primary_rays(settings: &[Setting], width: u32, height: u32) -> u64 {
+    let per_pixel: u64 = settings
+        .iter()
+        .map(|s| u64::from(s.sampling.samples()))
+        .sum();
+    per_pixel * u64::from(width) * u64::from(height)
+}
+
+/// What one primary ray of a termination costs, from one render with the
+/// centre ray: seconds, and rays traced in all (primary and the rays it
+/// spawns).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PerRay {
+    pub termination: Termination,
+    pub seconds: f64,
+    pub rays: f64,
+}
+
+/// The warm-up: one untimed render of each distinct termination of
+/// `settings`, with the centre ray (the thread pool started, the caches
+/// and the allocator warm). Its times, per primary ray, size the study
+/// before it starts and weigh its progress bar.
+pub fn warm_up(scene: &Scene, settings: &[Setting]) -> Vec<PerRay> {
+    let mut costs: Vec<PerRay> = Vec::new();
+    let pixels = f64::from(scene.image.width * scene.image.height).max(1.0);
+    for setting in settings {
+        if costs.iter().any(|c| c.termination == setting.termination) {
+            continue;
+        }
+        let centre = Setting {
+            sampling: Sampling::Centre,
+            ..*setting
+        };
+        let r = render_timed(scene, &centre, None, &|| {});
+        costs.push(PerRay {
+            termination: setting.termination,
+            seconds: r.seconds / pixels,
+            rays: r.rays as f64 / pixels,
+        });
+    }
+    costs
+}
+
+impl Tally {
+    fn new() -> Tally {
+        Tally {
+            sum: Vec::new(),
+            rays: 0,
+            seconds: Vec::new(),
+            errors: Vec::new(),
+        }
+    }
+
+    /// Counts one render in.
+    fn add(&mut self, rendered: Rendered, reference: &Image) {
+        self.errors
+            .push(metrics::errors(&rendered.image, reference));
+        self.seconds.push(rendered.seconds);
+        self.rays += rendered.rays;
+        if self.sum.is_empty() {
+            self.sum = rendered.image.pixels;
+        } else {
+            for (s, p) in self.sum.iter_mut().zip(rendered.image.pixels) {
+                *s += p;
+            }
+        }
+    }
+
+    /// The row, once every seed is in.
+    ///
+    /// With K renders X₁ … X_K, their mean X̄ and the reference R, the
+    /// mean MSE splits exactly as (1/K) Σₖ ‖Xₖ − R‖² = ‖X̄ − R‖² +
+    /// (1/K) Σₖ ‖Xₖ − X̄‖². The variance is estimated without bias by
+    /// V = Σₖ ‖Xₖ − X̄‖² / (K − 1), and E‖X̄ − R‖² = bias² + V/K, so
+    /// bias² = ‖X̄ − R‖² − V/K and mean MSE = bias² + V. A setting without
+    /// randomness has V = 0: all its error is bias.
+    fn row(self, setting: Setting, reference: &Image) -> Row {
+        let k = self.errors.len().max(1) as f64;
+        let mean_mse = self.errors.iter().map(|e| e.mse).sum::<f64>() / k;
+        let mean = Image {
+            width: reference.width,
+            height: reference.height,
+            pixels: self.sum.iter().map(|&s| s / k as f32).collect(),
+        };
+        let mse_of_mean = metrics::mse(&mean, reference);
+        let (bias2, variance) = if setting.sampling.is_random() && k > 1.0 {
+            let variance = (k * (mean_mse - mse_of_mean) / (k - 1.0)).max(0.0);
+            (mean_mse - variance, variance)
+        } else {
+            (mean_mse, 0.0)
+        };
+        Row {
+            setting,
+            rays: self.rays / k as u64,
+            seconds: self.seconds,
+            errors: self.errors,
+            bias2,
+            variance,
+        }
+    }
 }

@@ -1,74 +1,100 @@
-//! `raybook accuracy`: what each accuracy setting costs in time, and what it
-//! buys, measured.
+//! `raybook accuracy`: what each accuracy setting costs, and what it buys,
+//! measured against one truth.
 //!
-//! Four knobs are swept, one at a time, with the others held at their most
-//! accurate values: the maximum depth, the weight threshold, the samples per
-//! pixel, and the effects themselves, added a chapter at a time
-//! (`settings.rs`). Each setting is rendered several times (the median wall
-//! time counts) and compared with the knob's most accurate setting, the
-//! reference (`measure.rs`). The results are a table and a CSV file
-//! (`report.rs`) and a plot of error against time (`plot.rs`).
+//! The study renders a grid of settings, maximum depth × weight threshold ×
+//! sampling (one centre ray, or 1, 4, 16, … jittered rays per pixel), and
+//! the effects added a chapter at a time (`settings.rs`). Every row is
+//! compared with one reference, far more accurate than any row and
+//! rendered twice so that its own error is known (`reference.rs`, cached
+//! on disk). Each row is rendered with several seeds, interleaved with the
+//! others and timed (`measure.rs`), its error measured on linear and 8-bit
+//! values (`metrics.rs`) and split into bias² and variance (`summary.rs`).
+//! The report ranks the settings from those numbers (`report.rs`,
+//! `page.rs`) and draws them (`plot.rs`, `bars.rs`, `error_map.rs`).
 
+mod bars;
+mod error_map;
 mod measure;
+mod metrics;
+mod page;
 mod plot;
+mod reference;
 mod report;
 mod settings;
+mod study;
+mod summary;
 
-use raybook::scene_files;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
 use indicatif::{HumanDuration, ProgressBar, ProgressStyle};
-
-pub use measure::{Measurement, Options, run, sweep};
-pub use plot::plot;
-pub use report::{csv, pareto, table};
-pub use settings::{Knob, Setting, all_settings, settings};
-
-use raybook::toolkit::Scene;
+use raybook::scene_files;
 use raybook::toolkit::image::write_atomically;
+use raybook::toolkit::{Image, Scene};
+use raybook::tracer::Termination;
+use raybook::workbench::cli::with_threads;
 
-/// `raybook accuracy`: renders a scene at many settings and shows, measured,
-/// what each accuracy setting costs in time and what it buys.
+pub use measure::{PerRay, Row, measure_rows, primary_rays, render_timed, scene_for, warm_up};
+pub use metrics::{Errors, Psnr, errors};
+pub use page::{BUDGETS, page};
+pub use reference::{REFERENCE_SEEDS, Reference, reference};
+pub use report::{Cost, best_within, by_efficiency, csv, equal_time_table, pareto, slope, table};
+pub use settings::{Plan, REFERENCE_FACTOR, Sampling, Setting, Tracer, reference_setting};
+pub use study::Study;
+pub use summary::{FLOOR_FACTOR, Floor, Spread, Summary};
+
+/// `raybook accuracy`: renders a scene at many settings and shows, measured
+/// against one reference, what each costs and what it buys.
 #[derive(clap::Args, Debug, Clone)]
 pub struct AccuracyArgs {
     /// Scene file (TOML); default: the showcase.
     pub scene: Option<PathBuf>,
 
-    /// Fewer settings, a smaller image (240×180 instead of 640×480): done in
-    /// under 30 seconds. Use --runs 3 with it for the fastest look.
+    /// A smaller grid and picture (128×96, up to 16 rays per pixel): done
+    /// in under a minute on two cores. Without it, the full study: 256×192,
+    /// up to 64 rays per pixel, under 15 minutes with no cached reference.
     #[arg(long)]
     pub quick: bool,
 
-    /// Folder for accuracy.csv and accuracy.svg.
+    /// Folder for accuracy.md, accuracy.csv, the plots and the error maps.
     #[arg(long, default_value = "accuracy")]
     pub out: PathBuf,
 
-    /// Renders per setting; the median time counts.
-    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u64).range(1..=50))]
-    pub runs: u64,
+    /// Folder for the cached reference. Default: target/accuracy-reference
+    /// in the workspace.
+    #[arg(long)]
+    pub cache: Option<PathBuf>,
+
+    /// Renders per setting, each with its own seed where it is jittered.
+    #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u32).range(4..=64))]
+    pub seeds: u32,
+
+    /// The tracer to measure: the complete one, or chapter 7's own (no BVH,
+    /// so slower; it runs in a handout once chapters 1 to 7 are solved).
+    #[arg(long, value_enum, default_value_t = Tracer::Complete)]
+    pub tracer: Tracer,
+
+    /// Picture width in pixels, instead of the study's (a small one keeps
+    /// chapter 7's tracer fast); with --height.
+    #[arg(long, requires = "height", value_parser = clap::value_parser!(u32).range(8..=4096))]
+    pub width: Option<u32>,
+
+    /// Picture height in pixels, instead of the study's; with --width.
+    #[arg(long, requires = "width", value_parser = clap::value_parser!(u32).range(6..=4096))]
+    pub height: Option<u32>,
+
+    /// Threads to render with (default: one per core).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
 
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
 }
 
-impl AccuracyArgs {
-    /// How much to measure: the picture's size and the renders per setting.
-    fn options(&self) -> Options {
-        let (width, height) = if self.quick { (240, 180) } else { (640, 480) };
-        Options {
-            width,
-            height,
-            runs: self.runs as usize,
-            quick: self.quick,
-        }
-    }
-}
-
-/// Runs `raybook accuracy`: measures, prints the table, writes the CSV and
-/// the plot.
+/// Runs `raybook accuracy`: announces the study, measures, prints the
+/// report and writes it with the CSV, the plots and the error maps.
 pub fn main(args: &AccuracyArgs) -> ExitCode {
     let scene = match load_scene(args.scene.as_deref()) {
         Ok(scene) => scene,
@@ -77,25 +103,22 @@ pub fn main(args: &AccuracyArgs) -> ExitCode {
             return ExitCode::FAILURE;
         }
     };
-    let options = args.options();
+    let run = || {
+        let study = run_study(&scene, args);
+        let written = write_results(&study, &args.out);
+        (study, written)
+    };
     let started = Instant::now();
-    let bar = setting_progress(args.quiet);
-    let measurements = run(&scene, options, &bar);
-    bar.finish_and_clear();
-    let Options { width, height, .. } = options;
-    println!(
-        "{width}×{height} pixels, median of {} runs per setting\n",
-        args.runs
-    );
-    println!("{}", table(&measurements));
-    println!(
-        "measured {} settings in {}",
-        measurements.len(),
-        HumanDuration(started.elapsed())
-    );
-    match write_results(&measurements, &args.out) {
-        Ok((csv, svg)) => {
-            println!("wrote {} and {}", csv.display(), svg.display());
+    let Ok((study, written)) = with_threads(args.threads, run) else {
+        eprintln!("error: cannot start {:?} rendering threads", args.threads);
+        return ExitCode::FAILURE;
+    };
+    println!("{}", page(&study));
+    println!("measured in {}", HumanDuration(started.elapsed()));
+    match written {
+        Ok(paths) => {
+            let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+            println!("wrote {}", names.join(", "));
             ExitCode::SUCCESS
         }
         Err(e) => {
@@ -108,6 +131,153 @@ pub fn main(args: &AccuracyArgs) -> ExitCode {
     }
 }
 
+/// The study of `scene` as `args` ask, announced, with a progress bar, its
+/// error maps written.
+fn run_study(scene: &Scene, args: &AccuracyArgs) -> Study {
+    let mut plan = Plan::new(args.quick, Termination::of(scene));
+    plan.seeds = args.seeds;
+    plan.tracer = args.tracer;
+    if let (Some(width), Some(height)) = (args.width, args.height) {
+        (plan.width, plan.height) = (width, height);
+    }
+    let cache = args.cache.clone().unwrap_or_else(default_cache);
+    let quiet = args.quiet;
+    let mut bar = ProgressBar::hidden();
+    let (study, kept) = study(scene, plan, &cache, |plan, settings, seconds| {
+        announce(plan, settings, &cache, seconds);
+        bar = progress(quiet, (seconds * 1e6) as u64);
+        bar.clone()
+    });
+    bar.finish_and_clear();
+    if let Err(e) = error_map::write_maps(&kept, &study.reference.image, &args.out) {
+        eprintln!("note: cannot write the error maps: {e}");
+    }
+    study
+}
+
+/// Measures `plan` on `scene` (at the plan's size) against the reference
+/// cached in `cache` (made there if missing), and returns the study with
+/// the first pictures of the rows that [`Plan::mapped`] names.
+///
+/// After the warm-up, `start(plan, settings, seconds)` is told what will be
+/// rendered and the estimated seconds, and returns a progress bar, which
+/// counts estimated microseconds.
+pub fn study(
+    scene: &Scene,
+    plan: Plan,
+    cache: &Path,
+    start: impl FnOnce(&Plan, &[Setting], f64) -> ProgressBar,
+) -> (Study, Vec<(Setting, Image)>) {
+    let scene = scene.clone().with_size(plan.width, plan.height);
+    let settings = plan.settings();
+    let with_reference: Vec<Setting> = [plan.reference()]
+        .into_iter()
+        .chain(settings.iter().copied())
+        .collect();
+    let costs = warm_up(&scene, &with_reference);
+    // A row of pixels of a setting costs its rays per pixel times its
+    // termination's time per ray.
+    let micros = |s: &Setting| {
+        let per_ray = costs
+            .iter()
+            .find(|c| c.termination == s.termination)
+            .map_or(0.0, |c| c.seconds);
+        (1e6 * per_ray * f64::from(plan.width * s.sampling.samples())) as u64
+    };
+    let reference_micros = 2 * micros(&plan.reference()) * u64::from(plan.height);
+    let rows_micros =
+        u64::from(plan.seeds * plan.height) * settings.iter().map(micros).sum::<u64>();
+    let bar = start(
+        &plan,
+        &settings,
+        (reference_micros + rows_micros) as f64 / 1e6,
+    );
+    bar.set_message("reference");
+    let reference = reference(&scene, &plan.reference(), cache, &|| {
+        bar.inc(micros(&plan.reference()))
+    });
+    bar.set_position(reference_micros);
+    bar.set_message("settings");
+    let mapped = plan.mapped();
+    let keep = |s: &Setting| mapped.contains(s);
+    let (rows, kept) = measure_rows(
+        &scene,
+        &settings,
+        plan.seeds,
+        &reference.image,
+        keep,
+        &|s| bar.inc(micros(s)),
+    );
+    let floor = Floor {
+        mse: reference.floor_mse,
+    };
+    let pixels = (plan.width * plan.height) as usize;
+    let summaries: Vec<Summary> = rows.iter().map(|r| Summary::of(r, floor, pixels)).collect();
+    let find = |s: &Setting| summaries.iter().find(|r| r.setting == *s).cloned();
+    let effects = plan
+        .effect_steps()
+        .into_iter()
+        .filter_map(|(n, s)| Some((n, find(&s)?)))
+        .collect();
+    let grid = plan.grid().iter().filter_map(find).collect();
+    let study = Study {
+        plan,
+        reference,
+        floor,
+        grid,
+        effects,
+        threads: rayon::current_num_threads(),
+    };
+    (study, kept)
+}
+
+/// Says what the study will do and how long it should take, before it
+/// starts.
+fn announce(plan: &Plan, settings: &[Setting], cache: &Path, seconds: f64) {
+    let full = if plan.width >= 256 {
+        "full study"
+    } else {
+        "quick look"
+    };
+    println!(
+        "raybook accuracy, {full}: {}×{} pixels, {} settings ({} depths × {} thresholds × {} samplings, \
+         and the effects) × {} seeds, on {} threads.\nReference: 2 renders × {} jittered rays per pixel \
+         at depth 64, threshold 0, cached in {}.\nExpect about {} if the reference is not cached yet \
+         (from one untimed render of each setting with one ray per pixel, just now; the full study is \
+         sized for under 15 minutes on two cores).",
+        plan.width,
+        plan.height,
+        settings.len(),
+        plan.depths.len(),
+        plan.thresholds.len(),
+        plan.samplings.len(),
+        plan.seeds,
+        rayon::current_num_threads(),
+        plan.reference_samples,
+        cache.display(),
+        HumanDuration(std::time::Duration::from_secs_f64(seconds)),
+    );
+}
+
+/// A progress bar over the study's estimated microseconds; hidden when
+/// `quiet`.
+fn progress(quiet: bool, total: u64) -> ProgressBar {
+    if quiet {
+        return ProgressBar::hidden();
+    }
+    let style = ProgressStyle::with_template("{msg:>9} [{bar:40}] {percent}%, {eta} left")
+        .expect("a valid template")
+        .progress_chars("=> ");
+    ProgressBar::new(total).with_style(style)
+}
+
+/// target/accuracy-reference in the workspace.
+fn default_cache() -> PathBuf {
+    raybook::workbench::snapshot::workspace_root()
+        .join("target")
+        .join("accuracy-reference")
+}
+
 /// The scene file at `path`, or the showcase.
 fn load_scene(path: Option<&Path>) -> Result<Scene, String> {
     let loaded = match path {
@@ -117,35 +287,19 @@ fn load_scene(path: Option<&Path>) -> Result<Scene, String> {
     loaded.map_err(|e| e.to_string())
 }
 
-/// A progress bar over the settings, hidden when `quiet`; its length is
-/// set when the settings are known.
-fn setting_progress(quiet: bool) -> ProgressBar {
-    if quiet {
-        return ProgressBar::hidden();
-    }
-    let style =
-        ProgressStyle::with_template("measuring [{bar:40}] {pos}/{len} settings, {eta} left")
-            .expect("a valid template")
-            .progress_chars("=> ");
-    ProgressBar::new(0).with_style(style)
-}
-
-/// Writes accuracy.csv and accuracy.svg into `folder`, each atomically, and
-/// returns their paths.
-fn write_results(
-    measurements: &[Measurement],
-    folder: &Path,
-) -> Result<(PathBuf, PathBuf), String> {
+/// Writes accuracy.md, accuracy.csv, the reference's picture and the plots
+/// into `folder`, each atomically, and returns their paths.
+fn write_results(study: &Study, folder: &Path) -> Result<Vec<PathBuf>, String> {
+    let text = |e: std::io::Error| e.to_string();
+    let md = folder.join("accuracy.md");
+    write_atomically(&md, page(study).as_bytes()).map_err(text)?;
+    let rows = study.grid.iter().map(|r| ("grid", r));
+    let effects = study.effects.iter().map(|(_, r)| ("effects", r));
     let csv_path = folder.join("accuracy.csv");
-    let svg_path = folder.join("accuracy.svg");
-    write_atomically(&csv_path, csv(measurements).as_bytes()).map_err(|e| e.to_string())?;
-    plot_atomically(measurements, &svg_path)?;
-    Ok((csv_path, svg_path))
-}
-
-/// [`plot()`] to a temporary file, renamed into place when complete.
-fn plot_atomically(measurements: &[Measurement], path: &Path) -> Result<(), String> {
-    let temporary = path.with_extension("svg.partial");
-    plot(measurements, &temporary).map_err(|e| e.to_string())?;
-    std::fs::rename(&temporary, path).map_err(|e| e.to_string())
+    write_atomically(&csv_path, csv(rows.chain(effects), study.floor).as_bytes()).map_err(text)?;
+    let png = folder.join("reference.png");
+    study.reference.image.save_png(&png).map_err(text)?;
+    let mut written = vec![md, csv_path, png];
+    written.extend(plot::plot_all(study, folder)?);
+    Ok(written)
 }

@@ -1,98 +1,280 @@
-//! The measurements as the terminal and the README show them (a Markdown
-//! table), as a file keeps them (CSV), and the best of them (the Pareto
-//! front).
+//! The rows as the terminal and the performance page show them (Markdown
+//! tables), as a file keeps them (CSV), and the choices they support: the
+//! Pareto front, the best row within a time budget, the most efficient
+//! rows, and the rate at which jittered samples converge. Every ranking is
+//! computed from the rows' own numbers (the tests change one and watch the
+//! ranking follow).
 
 use serde::Serialize;
 
-use super::measure::Measurement;
+use super::summary::{Floor, Summary};
 use crate::bench::table::markdown;
 
-/// The measurements as a Markdown table, for the terminal and the README.
-pub fn table(measurements: &[Measurement]) -> String {
-    let header = [
-        "knob",
-        "value",
-        "time (s)",
-        "rays",
-        "RMSE",
-        "PSNR (dB)",
-        "max error",
-        "pixels off > 1/255",
-    ];
-    markdown(header, measurements.iter().map(cells), 2)
+/// The cost a Pareto front is drawn against.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cost {
+    /// The median wall time of one render: what a reader waits.
+    Time,
+    /// The rays traced by one render: exact, the same on any machine.
+    Rays,
 }
 
-/// The table's cells for one measurement.
-fn cells(m: &Measurement) -> [String; 8] {
-    let psnr = if m.psnr.is_finite() {
-        format!("{:.1}", m.psnr)
-    } else {
-        "∞".to_owned()
-    };
-    [
-        m.setting.knob.name().to_owned(),
-        m.setting.value.clone(),
-        format!("{:.4}", m.seconds),
-        m.rays.to_string(),
-        format!("{:.5}", m.rmse),
-        psnr,
-        format!("{:.4}", m.max_error),
-        format!("{:.2}%", 100.0 * m.share_off),
-    ]
-}
-
-/// One line of the CSV file: a measurement in full precision.
-#[derive(Debug, Serialize)]
-struct CsvRecord<'a> {
-    knob: &'static str,
-    value: &'a str,
-    seconds: f64,
-    rays: u64,
-    rmse: f64,
-    psnr_db: f64,
-    max_error: f64,
-    share_off_1_255: f64,
-}
-
-impl<'a> From<&'a Measurement> for CsvRecord<'a> {
-    fn from(m: &'a Measurement) -> Self {
-        CsvRecord {
-            knob: m.setting.knob.name(),
-            value: &m.setting.value,
-            seconds: m.seconds,
-            rays: m.rays,
-            rmse: m.rmse,
-            psnr_db: m.psnr,
-            max_error: m.max_error,
-            share_off_1_255: m.share_off,
+impl Cost {
+    /// The cost of `row`.
+    pub fn of(self, row: &Summary) -> f64 {
+        match self {
+            Cost::Time => row.time.median,
+            Cost::Rays => row.rays as f64,
         }
     }
 }
 
-/// The measurements as CSV: a header, then one line per setting, numbers in
-/// full precision. An exact match has an infinite PSNR, written `inf`.
-pub fn csv(measurements: &[Measurement]) -> String {
+/// The rows on the Pareto front, cheapest first: those that no other row
+/// beats on both cost and error. Errors closer than the reference's floor
+/// (its [`Floor::limit`]) cannot be told apart, so a row is beaten only by
+/// one that costs no more and whose error is no more than that much above
+/// its own, and is lower in cost or lower in error by more than that. Each
+/// row on the front is the cheapest way the study found to its error.
+pub fn pareto(rows: &[Summary], floor: Floor, cost: Cost) -> Vec<&Summary> {
+    let tolerance = floor.limit();
+    let point = |r: &Summary| (cost.of(r), r.ranked_error(floor));
+    let beats = |o: &Summary, m: &Summary| {
+        let ((oc, oe), (mc, me)) = (point(o), point(m));
+        oc <= mc && oe <= me + tolerance && (oc < mc || oe < me - tolerance)
+    };
+    let mut front: Vec<&Summary> = rows
+        .iter()
+        .filter(|m| !rows.iter().any(|o| beats(o, m)))
+        .collect();
+    front.sort_by(|a, b| point(a).0.total_cmp(&point(b).0));
+    front
+}
+
+/// The most accurate row whose median time is within `seconds`: of the
+/// rows within [`Floor::limit`] of the lowest error there, the fastest.
+/// `None` if no row is that fast.
+pub fn best_within(rows: &[Summary], floor: Floor, seconds: f64) -> Option<&Summary> {
+    let fast: Vec<&Summary> = rows.iter().filter(|r| r.time.median <= seconds).collect();
+    let lowest = fast
+        .iter()
+        .map(|r| r.ranked_error(floor))
+        .min_by(f64::total_cmp)?;
+    fast.into_iter()
+        .filter(|r| r.ranked_error(floor) <= lowest + floor.limit())
+        .min_by(|a, b| a.time.median.total_cmp(&b.time.median))
+}
+
+/// The rows by efficiency, 1 / (MSE × seconds), most efficient first.
+pub fn by_efficiency(rows: &[Summary], floor: Floor) -> Vec<&Summary> {
+    let mut sorted: Vec<&Summary> = rows.iter().collect();
+    sorted.sort_by(|a, b| b.efficiency(floor).total_cmp(&a.efficiency(floor)));
+    sorted
+}
+
+/// The slope of log(error) against log(samples), fitted by least squares
+/// to `points` (samples, error): −½ for plain Monte Carlo, −¾ for
+/// jittered sampling of a picture with edges (Mitchell 1996), −1 at best.
+/// `None` for fewer than two points.
+pub fn slope(points: &[(f64, f64)]) -> Option<f64> {
+    if points.len() < 2 {
+        return None;
+    }
+    let logs: Vec<(f64, f64)> = points.iter().map(|&(n, e)| (n.ln(), e.ln())).collect();
+    let count = logs.len() as f64;
+    let (mx, my) = logs
+        .iter()
+        .fold((0.0, 0.0), |(x, y), &(a, b)| (x + a / count, y + b / count));
+    let (sxy, sxx) = logs.iter().fold((0.0, 0.0), |(xy, xx), &(a, b)| {
+        (xy + (a - mx) * (b - my), xx + (a - mx) * (a - mx))
+    });
+    (sxx > 0.0).then(|| sxy / sxx)
+}
+
+/// A number in the tables: three significant digits, scientific.
+fn sci(v: f64) -> String {
+    format!("{v:.2e}")
+}
+
+/// An error cell: the value, or "at floor" where it cannot be told from
+/// the reference's own.
+fn error_cell(v: f64, at_floor: bool) -> String {
+    if at_floor {
+        "at floor".to_owned()
+    } else {
+        sci(v)
+    }
+}
+
+/// The header of [`table`]; ꟻLIP only when it was measured.
+fn header(flip: bool) -> Vec<&'static str> {
+    let mut header = vec![
+        "setting",
+        "rays",
+        "time (s): median (min–max)",
+        "RMSE: mean ± sd",
+        "bias²",
+        "variance",
+        "rel. MSE",
+        "PSNR 8-bit (dB)",
+        "px off",
+    ];
+    if flip {
+        header.push("ꟻLIP");
+    }
+    header.push("1/(MSE·s)");
+    header
+}
+
+/// One row of [`table`], named `name`.
+fn cells(name: &str, r: &Summary, floor: Floor, flip: bool) -> Vec<String> {
+    let t = r.time;
+    let rmse = if r.at_floor {
+        "at floor".to_owned()
+    } else if r.renders > 1 && r.rmse_sd > 0.0 {
+        format!("{} ± {:.1e}", sci(r.rmse), r.rmse_sd)
+    } else {
+        sci(r.rmse)
+    };
+    let mut cells = vec![
+        name.to_owned(),
+        r.rays.to_string(),
+        format!("{:.3} ({:.3}–{:.3})", t.median, t.min, t.max),
+        rmse,
+        error_cell(r.bias2, floor.holds(r.bias2)),
+        if r.setting.sampling.is_random() {
+            sci(r.variance)
+        } else {
+            "0 (no seed)".to_owned()
+        },
+        error_cell(r.relative_mse, r.at_floor),
+        if r.at_floor {
+            "at floor".to_owned()
+        } else {
+            r.psnr.to_string()
+        },
+        format!("{:.2}%", 100.0 * r.pixels_off),
+    ];
+    if flip {
+        cells.push(r.flip.map_or("–".to_owned(), |f| format!("{f:.4}")));
+    }
+    let efficiency = sci(r.efficiency(floor));
+    cells.push(if r.at_floor {
+        format!("≥ {efficiency}")
+    } else {
+        efficiency
+    });
+    cells
+}
+
+/// `rows` as a Markdown table, each with its name.
+pub fn table<'a>(rows: impl IntoIterator<Item = (String, &'a Summary)>, floor: Floor) -> String {
+    let rows: Vec<(String, &Summary)> = rows.into_iter().collect();
+    let flip = rows.iter().any(|(_, r)| r.flip.is_some());
+    let lines = rows.iter().map(|(name, r)| cells(name, r, floor, flip));
+    markdown(header(flip), lines, 1)
+}
+
+/// A row named by its setting, for [`table`].
+pub fn named(row: &Summary) -> (String, &Summary) {
+    (row.setting.name(), row)
+}
+
+/// The equal-time table: for each budget, the best row within it, and
+/// the best with one centre ray, for comparison.
+pub fn equal_time_table(rows: &[Summary], floor: Floor, budgets: &[f64]) -> String {
+    let centre: Vec<Summary> = rows
+        .iter()
+        .filter(|r| !r.setting.sampling.is_random())
+        .cloned()
+        .collect();
+    let describe = |best: Option<&Summary>| match best {
+        Some(r) => [
+            r.setting.name(),
+            error_cell(r.rmse, r.at_floor),
+            format!("{:.3}", r.time.median),
+        ],
+        None => [
+            "none is this fast".to_owned(),
+            "–".to_owned(),
+            "–".to_owned(),
+        ],
+    };
+    let lines = budgets.iter().map(|&budget| {
+        let [name, rmse, time] = describe(best_within(rows, floor, budget));
+        let [c_name, c_rmse, _] = describe(best_within(&centre, floor, budget));
+        vec![format!("{budget} s"), name, rmse, time, c_name, c_rmse]
+    });
+    let header = [
+        "budget",
+        "best setting",
+        "RMSE",
+        "time (s)",
+        "best with one centre ray",
+        "its RMSE",
+    ];
+    markdown(header, lines, 2)
+}
+
+/// One line of the CSV file: a row in full precision.
+#[derive(Debug, Serialize)]
+struct CsvRecord {
+    group: String,
+    max_depth: u32,
+    min_weight: f32,
+    sampling: String,
+    samples: u32,
+    effects: String,
+    renders: usize,
+    rays: u64,
+    seconds_median: f64,
+    seconds_min: f64,
+    seconds_max: f64,
+    mse: f64,
+    rmse_mean: f64,
+    rmse_sd: f64,
+    bias2: f64,
+    variance: f64,
+    relative_mse: f64,
+    psnr_8bit_db: String,
+    pixels_off: f64,
+    flip: Option<f64>,
+    at_floor: bool,
+    efficiency: f64,
+}
+
+/// `rows` as CSV, each with its group ("grid" or "effects"): a header,
+/// then one line per row, numbers in full precision.
+pub fn csv<'a>(rows: impl IntoIterator<Item = (&'a str, &'a Summary)>, floor: Floor) -> String {
     let mut writer = csv::Writer::from_writer(Vec::new());
-    for m in measurements {
+    for (group, r) in rows {
+        let record = CsvRecord {
+            group: group.to_owned(),
+            max_depth: r.setting.termination.max_depth,
+            min_weight: r.setting.termination.min_weight,
+            sampling: r.setting.sampling.name(),
+            samples: r.setting.sampling.samples(),
+            effects: r.setting.effects.to_string(),
+            renders: r.renders,
+            rays: r.rays,
+            seconds_median: r.time.median,
+            seconds_min: r.time.min,
+            seconds_max: r.time.max,
+            mse: r.mse,
+            rmse_mean: r.rmse,
+            rmse_sd: r.rmse_sd,
+            bias2: r.bias2,
+            variance: r.variance,
+            relative_mse: r.relative_mse,
+            psnr_8bit_db: r.psnr.to_string(),
+            pixels_off: r.pixels_off,
+            flip: r.flip,
+            at_floor: r.at_floor,
+            efficiency: r.efficiency(floor),
+        };
         writer
-            .serialize(CsvRecord::from(m))
+            .serialize(record)
             .expect("a record of plain fields always serialises into memory");
     }
     let bytes = writer.into_inner().expect("writing to memory cannot fail");
     String::from_utf8(bytes).expect("CSV of UTF-8 text is UTF-8")
-}
-
-/// The measurements on the Pareto front, fastest first: no other is both
-/// faster and more accurate (those with zero error are the references, and
-/// on it if fastest).
-pub fn pareto(measurements: &[Measurement]) -> Vec<&Measurement> {
-    let dominates = |o: &Measurement, m: &Measurement| {
-        o.seconds <= m.seconds && o.rmse <= m.rmse && (o.seconds < m.seconds || o.rmse < m.rmse)
-    };
-    let mut front: Vec<&Measurement> = measurements
-        .iter()
-        .filter(|m| !measurements.iter().any(|o| dominates(o, m)))
-        .collect();
-    front.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
-    front
 }

@@ -1,110 +1,295 @@
-//! The accuracy knobs, and the settings each sweep renders.
+//! What the study renders: the grid of settings (maximum depth × weight
+//! threshold × sampling), the effects added a chapter at a time, and the
+//! one reference that every row is measured against.
 
 use raybook::toolkit::scene::{Effect, Effects};
 use raybook::tracer::Termination;
 
-/// The accuracy knobs of the tracer.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Knob {
-    /// How many bounces a path may take (chapter 7's maximum depth).
-    Depth,
-    /// The weight below which a path ends (chapter 7's threshold).
-    Threshold,
-    /// Rays per pixel, for anti-aliasing.
-    Samples,
-    /// The effects simulated, added a chapter at a time.
-    Effects,
+/// How the rays of a pixel are placed: two different estimators, so two
+/// different rows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Sampling {
+    /// One ray through the pixel's centre, as a render without `--seed`
+    /// casts it: deterministic, so it has no variance, only bias (the
+    /// centre's colour is not the pixel's mean colour at an edge).
+    Centre,
+    /// N rays, one at a random point of each cell of a √N × √N grid
+    /// (chapter 1's jittered sampling, with `--seed`): an unbiased estimate
+    /// of the pixel's mean colour, whose variance falls as N grows.
+    Jittered(u32),
 }
 
-impl Knob {
-    /// Every knob, in the order the tools report them.
-    pub const ALL: [Knob; 4] = [Knob::Depth, Knob::Threshold, Knob::Samples, Knob::Effects];
-
-    /// The knob's name, as the table and the plot show it.
-    pub fn name(self) -> &'static str {
+impl Sampling {
+    /// Rays per pixel.
+    pub fn samples(self) -> u32 {
         match self {
-            Knob::Depth => "max depth",
-            Knob::Threshold => "weight threshold",
-            Knob::Samples => "samples per pixel",
-            Knob::Effects => "effects",
+            Sampling::Centre => 1,
+            Sampling::Jittered(n) => n,
+        }
+    }
+
+    /// Whether renders with different seeds differ.
+    pub fn is_random(self) -> bool {
+        matches!(self, Sampling::Jittered(_))
+    }
+
+    /// As the tables write it: "centre" or "4 jittered".
+    pub fn name(self) -> String {
+        match self {
+            Sampling::Centre => "centre".to_owned(),
+            Sampling::Jittered(n) => format!("{n} jittered"),
         }
     }
 }
 
+/// Which tracer renders: the complete one (`raybook render`'s, with its
+/// BVH), or chapter 7's own, which tests every object for every ray and
+/// needs only chapters 1 to 7 solved: the one a student's handout can run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Tracer {
+    #[default]
+    Complete,
+    #[value(name = "chapter7")]
+    Chapter7,
+}
+
 /// One setting of the tracer.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Setting {
-    /// The knob this setting turns.
-    pub knob: Knob,
-    /// The knob's value, as shown in the table.
-    pub value: String,
-    /// The criteria that end a path.
+    /// The criteria that end a path (chapter 7).
     pub termination: Termination,
-    /// Rays per pixel.
-    pub samples: u32,
+    /// The rays per pixel and where they go.
+    pub sampling: Sampling,
     /// The effects simulated (of those the scene calls for).
     pub effects: Effects,
+    /// The tracer that renders it.
+    pub tracer: Tracer,
 }
 
-/// The most accurate setting: every bounce, no threshold, every effect.
-fn best(samples: u32) -> Setting {
+impl Setting {
+    /// The setting's name in a table: depth, threshold, sampling, and the
+    /// effects when some are missing.
+    pub fn name(&self) -> String {
+        let Termination {
+            max_depth,
+            min_weight,
+        } = self.termination;
+        let mut name = format!(
+            "depth {max_depth}, threshold {min_weight}, {}",
+            self.sampling.name()
+        );
+        if self.effects != Effects::ALL {
+            name = format!("{name}, only {}", self.effects);
+        }
+        name
+    }
+}
+
+/// The most accurate setting, which the reference renders: depth 64, far
+/// beyond any row's, no threshold, and `samples` jittered rays.
+pub fn reference_setting(samples: u32) -> Setting {
     Setting {
-        knob: Knob::Depth,
-        value: String::new(),
         termination: Termination {
-            max_depth: 12,
+            max_depth: 64,
             min_weight: 0.0,
         },
-        samples,
+        sampling: Sampling::Jittered(samples),
         effects: Effects::ALL,
+        tracer: Tracer::Complete,
     }
 }
 
-/// The settings of one sweep, most accurate last (it is the reference):
-/// `knob` turned, everything else at its most accurate. `quick` sweeps
-/// fewer values.
-pub fn settings(knob: Knob, quick: bool) -> Vec<Setting> {
-    let turned = |value: String, change: &dyn Fn(&mut Setting)| {
-        let mut setting = Setting {
-            knob,
-            value,
-            ..best(1)
+/// What one study renders.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plan {
+    /// The picture's size in pixels.
+    pub width: u32,
+    /// The picture's height in pixels.
+    pub height: u32,
+    /// The maximum depths of the grid.
+    pub depths: Vec<u32>,
+    /// The weight thresholds of the grid.
+    pub thresholds: Vec<f32>,
+    /// The samplings of the grid.
+    pub samplings: Vec<Sampling>,
+    /// Renders of each row; each random row gets a seed per render.
+    pub seeds: u32,
+    /// Rays per pixel of each of the reference's two independent renders:
+    /// 16 times the grid's largest count.
+    pub reference_samples: u32,
+    /// The criteria the effects rows use: the scene's own.
+    pub scene_default: Termination,
+    /// The tracer every render uses.
+    pub tracer: Tracer,
+}
+
+/// The factor by which the reference has more rays per pixel than any row.
+pub const REFERENCE_FACTOR: u32 = 16;
+
+impl Plan {
+    /// The full study (`quick = false`) or the quick look. Sized to fit a
+    /// 2-core machine: under 15 minutes with an empty cache, and under one
+    /// minute for the quick look (the performance page says how).
+    pub fn new(quick: bool, scene_default: Termination) -> Plan {
+        let (width, height) = if quick { (128, 96) } else { (256, 192) };
+        let depths = if quick {
+            vec![1, 2, 6, 16]
+        } else {
+            vec![1, 2, 3, 4, 6, 8, 16]
         };
-        change(&mut setting);
-        setting
-    };
-    match knob {
-        Knob::Depth => depths(quick)
+        let thresholds = if quick {
+            vec![0.01, 0.001, 0.0]
+        } else {
+            vec![0.1, 0.01, 0.001, 0.0001, 0.0]
+        };
+        let largest = if quick { 16 } else { 64 };
+        let mut samplings = vec![Sampling::Centre];
+        samplings.extend(
+            (0..)
+                .map(|k| 4u32.pow(k))
+                .take_while(|&n| n <= largest)
+                .map(Sampling::Jittered),
+        );
+        Plan {
+            width,
+            height,
+            depths,
+            thresholds,
+            samplings,
+            seeds: 4,
+            reference_samples: REFERENCE_FACTOR * largest,
+            scene_default,
+            tracer: Tracer::Complete,
+        }
+    }
+
+    /// Every setting of the grid depth × threshold × sampling, every effect
+    /// on: depths outermost, samplings innermost.
+    pub fn grid(&self) -> Vec<Setting> {
+        let mut grid = Vec::new();
+        for &max_depth in &self.depths {
+            for &min_weight in &self.thresholds {
+                for &sampling in &self.samplings {
+                    grid.push(Setting {
+                        termination: Termination {
+                            max_depth,
+                            min_weight,
+                        },
+                        sampling,
+                        effects: Effects::ALL,
+                        tracer: self.tracer,
+                    });
+                }
+            }
+        }
+        grid
+    }
+
+    /// The effects added a chapter at a time, at the scene's own criteria
+    /// and one centre ray: what a student's binary renders. The last, every
+    /// effect, is also a row of the grid when the scene's criteria are in it.
+    pub fn effect_steps(&self) -> Vec<(&'static str, Setting)> {
+        EFFECT_STEPS
             .into_iter()
-            .map(|d| turned(d.to_string(), &|s| s.termination.max_depth = d))
-            .collect(),
-        Knob::Threshold => [0.1f32, 1e-2, 1e-3, 1e-4, 0.0]
-            .into_iter()
-            .map(|w| turned(w.to_string(), &|s| s.termination.min_weight = w))
-            .collect(),
-        Knob::Samples => sample_counts(quick)
+            .map(|(name, effects)| {
+                let setting = Setting {
+                    termination: self.scene_default,
+                    sampling: Sampling::Centre,
+                    effects: Effects::of(effects),
+                    tracer: self.tracer,
+                };
+                (name, setting)
+            })
+            .collect()
+    }
+
+    /// Every setting the study renders, each once: the grid, then the
+    /// effect steps that are not in it.
+    pub fn settings(&self) -> Vec<Setting> {
+        let mut settings = self.grid();
+        for (_, step) in self.effect_steps() {
+            if !settings.contains(&step) {
+                settings.push(step);
+            }
+        }
+        settings
+    }
+
+    /// The grid's most accurate termination: its largest depth, its
+    /// smallest threshold.
+    pub fn most_accurate(&self) -> Termination {
+        Termination {
+            max_depth: self.depths.iter().copied().max().unwrap_or(0),
+            min_weight: self
+                .thresholds
+                .iter()
+                .copied()
+                .fold(f32::INFINITY, f32::min),
+        }
+    }
+
+    /// The grid setting nearest the scene's own criteria, with one centre
+    /// ray: what the chapter binaries render by default. Every knob is
+    /// turned from here in the report's first table.
+    pub fn base(&self) -> Setting {
+        let Termination {
+            max_depth,
+            min_weight,
+        } = self.scene_default;
+        let depth = nearest(&self.depths, |&d| {
+            (f64::from(d) - f64::from(max_depth)).abs()
+        });
+        let threshold = nearest(&self.thresholds, |&w| {
+            ((f64::from(w) + 1e-6).ln() - (f64::from(min_weight) + 1e-6).ln()).abs()
+        });
+        Setting {
+            termination: Termination {
+                max_depth: depth,
+                min_weight: threshold,
+            },
+            sampling: Sampling::Centre,
+            effects: Effects::ALL,
+            tracer: self.tracer,
+        }
+    }
+
+    /// The rows whose error maps are written: the base, the base with the
+    /// grid's smallest depth, largest threshold, and second-largest number
+    /// of jittered rays, and the grid's most accurate row.
+    pub fn mapped(&self) -> Vec<Setting> {
+        let base = self.base();
+        let mut settings = vec![base];
+        let mut shallow = base;
+        shallow.termination.max_depth = self.depths.iter().copied().min().unwrap_or(0);
+        let mut lenient = base;
+        lenient.termination.min_weight = self.thresholds.iter().copied().fold(0.0, f32::max);
+        let jittered: Vec<Sampling> = self
+            .samplings
             .iter()
-            .map(|&n| turned(n.to_string(), &|s| s.samples = n))
-            .collect(),
-        Knob::Effects => EFFECT_STEPS
-            .into_iter()
-            .map(|(name, effects)| turned(name.to_owned(), &|s| s.effects = Effects::of(effects)))
-            .collect(),
+            .copied()
+            .filter(|s| s.is_random())
+            .collect();
+        settings.extend([shallow, lenient]);
+        if let Some(&sampling) = jittered.iter().rev().nth(1) {
+            settings.push(Setting { sampling, ..base });
+        }
+        if let Some(&sampling) = jittered.last() {
+            settings.push(Setting {
+                termination: self.most_accurate(),
+                sampling,
+                ..base
+            });
+        }
+        settings.dedup();
+        settings
     }
-}
-
-/// The maximum depths swept: every one from 0 to 12, or some when quick.
-fn depths(quick: bool) -> Vec<u32> {
-    if quick {
-        vec![0, 1, 2, 3, 4, 6, 8, 12]
-    } else {
-        (0..=12).collect()
+    /// The reference's setting.
+    pub fn reference(&self) -> Setting {
+        Setting {
+            tracer: self.tracer,
+            ..reference_setting(self.reference_samples)
+        }
     }
-}
-
-/// The samples per pixel swept.
-fn sample_counts(quick: bool) -> &'static [u32] {
-    if quick { &[1, 4, 16] } else { &[1, 4, 16, 64] }
 }
 
 /// The effects swept: a chapter's at a time, with their names.
@@ -121,10 +306,10 @@ const EFFECT_STEPS: [(&str, &[Effect]); 4] = {
     ]
 };
 
-/// Every knob's sweep, in the order of [`Knob::ALL`].
-pub fn all_settings(quick: bool) -> Vec<Setting> {
-    Knob::ALL
-        .into_iter()
-        .flat_map(|knob| settings(knob, quick))
-        .collect()
+/// The value of `values` with the smallest `distance`.
+fn nearest<T: Copy>(values: &[T], distance: impl Fn(&T) -> f64) -> T {
+    *values
+        .iter()
+        .min_by(|a, b| distance(a).total_cmp(&distance(b)))
+        .expect("the grid has values")
 }

@@ -10,13 +10,13 @@ use tabled::settings::{Alignment, Style};
 
 /// A Markdown table of `header` over `rows`. The first `text_columns`
 /// columns (names) are left-aligned; the others (numbers) right-aligned.
-pub fn markdown<const N: usize>(
-    header: [&str; N],
-    rows: impl IntoIterator<Item = [String; N]>,
+pub fn markdown<H: Into<String>, R: IntoIterator<Item = String>>(
+    header: impl IntoIterator<Item = H>,
+    rows: impl IntoIterator<Item = R>,
     text_columns: usize,
 ) -> String {
     let mut builder = Builder::new();
-    builder.push_record(header);
+    builder.push_record(header.into_iter().map(Into::into));
     for row in rows {
         builder.push_record(row);
     }
@@ -54,7 +54,7 @@ mod tests {
 
     #[test]
     fn a_table_without_rows_is_its_header() {
-        let table = markdown(["name", "n"], [], 1);
+        let table = markdown(["name", "n"], Vec::<[String; 2]>::new(), 1);
         assert!(table.starts_with("| name | n |"), "{table}");
     }
 }

@@ -115,6 +115,7 @@ impl SceneFile {
                 height: self.image.height.0,
                 background: self.image.background.0,
                 samples: self.image.samples.0,
+                seed: None,
             },
             trace: TraceSpec {
                 max_depth: self.trace.max_depth.0,

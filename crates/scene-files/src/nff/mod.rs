@@ -271,6 +271,7 @@ impl Nff {
                 height,
                 background: self.background,
                 samples: 1, // one ray per pixel, as the benchmark asks
+                seed: None,
             },
             trace: TraceSpec::default(),
             materials: self.materials,

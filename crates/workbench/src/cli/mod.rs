@@ -17,9 +17,11 @@ use scene_files::SceneError;
 use scene_files::{Effect, Effects};
 
 mod pixel;
+mod values;
 
 pub use pixel::{Pixel, TreeView};
 use pixel::{explain_pixel, pixel};
+use values::{samples, weight};
 
 /// A chapter binary: which chapter it is, and its default scene.
 ///
@@ -76,6 +78,15 @@ pub struct RenderArgs {
     /// number (1, 4, 9, 16, ...); more rays smooth the jagged edges.
     #[arg(long, value_parser = samples)]
     pub samples: Option<u32>,
+
+    /// Draw the rays' positions inside each pixel from the seed N: every
+    /// ray at a random point of its cell, even with one sample per pixel.
+    /// Another seed gives another, independent picture; the same seed, scene
+    /// and size give the same bytes on any number of threads. Without it,
+    /// the positions depend on the pixel alone and one sample goes through
+    /// the pixel's centre (chapter 1, "More rays per pixel").
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u64>,
 
     /// Bounces a path may make, instead of the scene's [trace] max_depth:
     /// more show mirrors in mirrors, fewer render faster (chapter 5 on).
@@ -147,6 +158,7 @@ impl RenderArgs {
         let height = self.height.unwrap_or(scene.image.height);
         let mut scene = scene.with_size(width, height);
         scene.image.samples = self.samples.unwrap_or(scene.image.samples);
+        scene.image.seed = self.seed.or(scene.image.seed);
         scene.trace.max_depth = self.max_depth.unwrap_or(scene.trace.max_depth);
         scene.trace.min_weight = self.min_weight.unwrap_or(scene.trace.min_weight);
         Ok((scene, name))
@@ -254,24 +266,6 @@ impl std::fmt::Display for EffectPlan {
             write!(f, " (switched off: {off})")?;
         }
         Ok(())
-    }
-}
-
-/// Parses `--min-weight`: a weight from 0 to 1.
-fn weight(text: &str) -> Result<f32, String> {
-    match text.parse::<f32>() {
-        Ok(w) if (0.0..=1.0).contains(&w) => Ok(w),
-        _ => Err(format!("expected a number from 0 to 1, found {text:?}")),
-    }
-}
-
-/// Parses `--samples`: a square number from 1 to 1024.
-fn samples(text: &str) -> Result<u32, String> {
-    match text.parse::<u32>() {
-        Ok(n) if scene_files::is_square_sample_count(n) => Ok(n),
-        _ => Err(format!(
-            "expected a square number from 1 to 1024 (1, 4, 9, 16, ...), found {text:?}"
-        )),
     }
 }
 
