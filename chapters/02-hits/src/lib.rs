@@ -14,8 +14,8 @@ pub use sphere::{
     Quadratic, intersect_sphere, nearest_root, sphere_point, sphere_roots, sphere_roots_abc,
 };
 pub use triangle::{
-    barycentrics, intersect_triangle, smooth_normal, triangle_by_plane, triangle_normal,
-    triangle_point,
+    barycentrics, intersect_triangle, smooth_normal, triangle_by_plane, triangle_hit_point,
+    triangle_normal, triangle_plane_t, triangle_point,
 };
 
 use toolkit::scene::{Object, Shape};
@@ -105,10 +105,10 @@ pub fn hit_with_weights(
     object: usize,
 ) -> Hit {
     // Each point lies on its surface up to rounding (projected onto a sphere
-    // or plane; a triangle's is the barycentric mean of its corners), which
-    // bounds its error by a few units in the last place (f32::EPSILON
-    // relative) of the largest coordinate involved: the point's, and for a
-    // triangle its corners'. A cone's point is worked out in f64 and is
+    // or plane; a triangle's is the ray's point r(t) with t worked out again
+    // in f64, see triangle_hit_point), which bounds its error by a few units
+    // in the last place (f32::EPSILON relative) of the largest coordinate
+    // involved: the point's. A cone's point is worked out in f64 and is
     // off by its rounding to f32 only, as a sphere's is.
     let (point, normal, shading_normal, error) = match *shape {
         Shape::Sphere { center, radius } => {
@@ -123,15 +123,12 @@ pub fn hit_with_weights(
         }
         Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             let normal = triangle_normal(vertices);
-            let point = triangle_point(vertices, weights);
+            let (point, error) = triangle_hit_point(vertices, weights, ray);
             let shading_normal = match *shape {
                 Shape::SmoothTriangle { normals, .. } => smooth_normal(normals, weights, normal),
                 _ => normal,
             };
-            let scale = vertices
-                .iter()
-                .fold(largest(point), |m, &v| m.max(largest(v)));
-            (point, normal, shading_normal, 8.0 * f32::EPSILON * scale)
+            (point, normal, shading_normal, error)
         }
         Shape::Cone {
             base,
