@@ -420,10 +420,8 @@ impl Triangles {
     }
 
     /// Chapter 2's watertight test (`intersect_triangle`) in four lanes, up
-    /// to its t: each corner projected into the ray's space by the same
-    /// products and sums, the same edge functions and determinant. A lane
-    /// is a hit if the ray's line passes through its triangle; its t
-    /// ([`Triangles::t`]) decides if it is in the ray's range.
+    /// to its t ([`Triangles::t`]): the same products and sums, the same
+    /// edge functions and determinant.
     #[inline(always)]
     fn intersect(&self, ray: &mut PreparedRay) -> Found {
         let shear = ray.shear();
