@@ -261,6 +261,22 @@ fn area(binary: &[build::Node], n: usize) -> f32 {
 }
 
 impl WideBvh<'_> {
+    /// The nearest hit, without chapter 2's rule for coincident surfaces
+    /// (`closest_hit` applies it): `cargo bench --bench coincident`
+    /// measures what the rule costs against this.
+    pub fn nearest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let mut closest = closest::Closest::new(t_max);
+        for &object in &self.planes {
+            let limit = closest.limit();
+            let t = crate::tracer::intersect(self.shape(object), ray, t_min, limit);
+            if let Some(t) = t {
+                closest.offer((t, Weights::NONE), object as u32);
+            }
+        }
+        self.closest(&mut PreparedRay::new(ray), t_min, &mut closest);
+        Some(self.hit(ray, closest.found?))
+    }
+
     /// The hit record of a found (t, object, weights).
     fn hit(&self, ray: &Ray, (t, object, weights): (f32, u32, Weights)) -> Hit {
         let object = object as usize;
@@ -291,18 +307,8 @@ impl WideBvh<'_> {
 
 impl World for WideBvh<'_> {
     fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-        let mut closest = closest::Closest::new(t_max);
-        for &object in &self.planes {
-            let limit = closest.limit();
-            let t = crate::tracer::intersect(self.shape(object), ray, t_min, limit);
-            if let Some(t) = t {
-                closest.offer((t, Weights::NONE), object as u32);
-            }
-        }
-        let mut prepared = PreparedRay::new(ray);
-        self.closest(&mut prepared, t_min, &mut closest);
-        let nearest = self.hit(ray, closest.found?);
-        Some(self.first_coincident(&mut prepared, (t_min, t_max), nearest))
+        let nearest = self.nearest_hit(ray, t_min, t_max)?;
+        Some(self.first_coincident(&mut PreparedRay::new(ray), (t_min, t_max), nearest))
     }
 
     fn any_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {

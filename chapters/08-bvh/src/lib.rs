@@ -299,8 +299,10 @@ impl Search<'_> for Blocker<'_> {
     }
 }
 
-impl World for Bvh {
-    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+impl Bvh {
+    /// The nearest hit, as chapter 2's loop finds it, without its rule for
+    /// coincident surfaces (`closest_hit` applies it).
+    pub fn nearest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
         let mut closest = Closest {
             ray,
             t_min,
@@ -310,7 +312,13 @@ impl World for Bvh {
         self.unbounded.iter().for_each(|p| closest.offer(p));
         self.traverse(ray, t_min, &mut closest);
         let (t, primitive) = closest.found?;
-        let nearest = hit_at(&primitive.shape, ray, t, primitive.object);
+        Some(hit_at(&primitive.shape, ray, t, primitive.object))
+    }
+}
+
+impl World for Bvh {
+    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let nearest = self.nearest_hit(ray, t_min, t_max)?;
         Some(self.first_coincident(ray, (t_min, t_max), nearest))
     }
 
