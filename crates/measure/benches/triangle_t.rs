@@ -18,6 +18,9 @@ use raybook::toolkit::Vec3;
 use raybook::toolkit::scene::Shape;
 use raybook::tracer::{Camera, Ray, intersect_triangle};
 
+/// A triangle test: the ray, the corners, the t found.
+type Test = dyn Fn(&Ray, [Vec3; 3]) -> Option<f32>;
+
 /// The watertight test with its own t, as chapter 2 had it before.
 fn watertight_f32([p0, p1, p2]: [Vec3; 3], ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
     let d = ray.direction;
@@ -80,7 +83,7 @@ fn main() {
         let f32_t = |ray: &Ray, t: [Vec3; 3]| watertight_f32(t, ray, 0.0, f32::INFINITY);
         let f64_t =
             |ray: &Ray, t: [Vec3; 3]| intersect_triangle(t, ray, 0.0, f32::INFINITY).map(|h| h.0);
-        let ways: [&dyn Fn(&Ray, [Vec3; 3]) -> Option<f32>; 2] = [&f32_t, &f64_t];
+        let ways: [&Test; 2] = [&f32_t, &f64_t];
         let mut times: [Vec<Duration>; 2] = Default::default();
         for _ in 0..15 {
             for (i, way) in ways.iter().enumerate() {
