@@ -201,7 +201,7 @@ fn coincident(method: Method) -> (ch02_hits::toolkit::Image, usize, usize) {
 #[test]
 fn coincident_surfaces_show_the_first_listed_by_the_rule_and_a_speckle_without_it() {
     let (robust, robust_wrong, covered) = coincident(Method::Robust);
-    let (lecture, lecture_wrong, _) = coincident(Method::Lecture);
+    let (_, lecture_wrong, _) = coincident(Method::Lecture);
     println!(
         "coincident: {robust_wrong} pixels wrong with the rule, {lecture_wrong} without, of {covered} on a triangle"
     );
@@ -214,6 +214,8 @@ fn coincident_surfaces_show_the_first_listed_by_the_rule_and_a_speckle_without_i
         lecture_wrong > covered / 20,
         "the lecture's methods miss the rule on only {lecture_wrong} pixels: this case should show a speckle"
     );
+    // Only the rule's picture is a reference: where the speckle falls
+    // depends on the rounding of each student's own lecture methods (the
+    // README shows the workbook's, chapters/02-hits/images/).
     assert_image("02-hits", "coincident-robust", &robust);
-    assert_image("02-hits", "coincident-lecture", &lecture);
 }
