@@ -7,8 +7,9 @@
 //! none ([`Direct`]), and the choice between the two ([`render_complete`]).
 
 pub use ch02_hits::{
-    Quadratic, hit_at, hit_with_weights, intersect, intersect_cone, intersect_plane,
-    intersect_sphere, intersect_triangle, sphere_point, sphere_roots, triangle_normal,
+    Quadratic, closest_hit_by, coincident_range, first_coincident, hit_at, hit_with_weights,
+    intersect, intersect_cone, intersect_plane, intersect_sphere, intersect_triangle, sphere_point,
+    sphere_roots, triangle_normal, triangle_plane_t,
 };
 pub use ch07_termination::*;
 

@@ -36,7 +36,7 @@ use ch08_bvh::Aabb;
 use ch08_bvh::build::{self, Item};
 
 use crate::toolkit::scene::{Object, Shape};
-use crate::tracer::{Hit, Ray, World, hit_with_weights};
+use crate::tracer::{Hit, Ray, World, coincident_range, hit_with_weights};
 use node::{Child, Node4};
 use packet::Packet;
 use primitive::{PreparedRay, Primitive, Weights};
@@ -260,8 +260,11 @@ fn area(binary: &[build::Node], n: usize) -> f32 {
     binary[n].bounds.half_area()
 }
 
-impl World for WideBvh<'_> {
-    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+impl WideBvh<'_> {
+    /// The nearest hit, without chapter 2's rule for coincident surfaces
+    /// (`closest_hit` applies it): `cargo bench --bench coincident`
+    /// measures what the rule costs against this.
+    pub fn nearest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
         let mut closest = closest::Closest::new(t_max);
         for &object in &self.planes {
             let limit = closest.limit();
@@ -271,16 +274,41 @@ impl World for WideBvh<'_> {
             }
         }
         self.closest(&mut PreparedRay::new(ray), t_min, &mut closest);
-        let (t, object, weights) = closest.found?;
+        Some(self.hit(ray, closest.found?))
+    }
+
+    /// The hit record of a found (t, object, weights).
+    fn hit(&self, ray: &Ray, (t, object, weights): (f32, u32, Weights)) -> Hit {
         let object = object as usize;
-        let weights = weights.alpha_beta();
-        Some(hit_with_weights(
-            self.shape(object),
-            ray,
-            t,
-            weights,
-            object,
-        ))
+        hit_with_weights(self.shape(object), ray, t, weights.alpha_beta(), object)
+    }
+
+    /// Chapter 2's rule for coincident surfaces (`first_coincident`), with
+    /// `nearest` the nearest hit: a second walk through the boxes that the
+    /// ray crosses in the window around it only.
+    fn first_coincident(&self, ray: &mut PreparedRay, range: (f32, f32), nearest: Hit) -> Hit {
+        if nearest.object == 0 {
+            return nearest; // nothing is listed before it
+        }
+        let (lower, upper) = coincident_range(&nearest, ray.ray, range.0, range.1);
+        let mut first = closest::Closest::first_before(nearest.object as u32, upper);
+        for &object in self.planes.iter().filter(|&&o| o < nearest.object) {
+            let t = crate::tracer::intersect(self.shape(object), ray.ray, lower, upper);
+            if let Some(t) = t {
+                first.offer((t, Weights::NONE), object as u32);
+            }
+        }
+        self.closest(ray, lower, &mut first);
+        first
+            .found
+            .map_or(nearest, |found| self.hit(ray.ray, found))
+    }
+}
+
+impl World for WideBvh<'_> {
+    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let nearest = self.nearest_hit(ray, t_min, t_max)?;
+        Some(self.first_coincident(&mut PreparedRay::new(ray), (t_min, t_max), nearest))
     }
 
     fn any_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {

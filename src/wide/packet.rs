@@ -5,9 +5,10 @@
 //! The four-lane tests do the scalar tests' operations in the same order in
 //! each lane, so each lane's answer is the scalar test's to the last bit:
 //! - four triangles go through chapter 2's watertight test together, up to
-//!   t and the barycentric weights; a lane on an edge in f32 (an edge
-//!   function exactly 0, which chapter 2 decides again in f64) goes alone
-//!   through chapter 2's `intersect_triangle` itself;
+//!   the barycentric weights; a lane the ray passes through gets its t from
+//!   chapter 2's `triangle_plane_t` (in f64, one lane at a time), and a lane
+//!   on an edge in f32 (an edge function exactly 0, which chapter 2 decides
+//!   again in f64) goes alone through chapter 2's `intersect_triangle`;
 //! - four spheres go through the f32 test that rules out rays that pass
 //!   too far from the centre ([`might_hit`](Spheres::might_hit)); of the
 //!   few lanes left, a sphere behind the ray's origin has no root ahead
@@ -25,7 +26,9 @@ use ch08_bvh::Aabb;
 
 use crate::toolkit::Vec3;
 use crate::toolkit::scene::Object;
-use crate::tracer::{Quadratic, Ray, intersect_cone, intersect_sphere, intersect_triangle};
+use crate::tracer::{
+    Quadratic, Ray, intersect_cone, intersect_sphere, intersect_triangle, triangle_plane_t,
+};
 
 /// Up to four primitives of one kind, and which scene objects they are.
 #[derive(Debug, Clone, Copy)]
@@ -153,10 +156,10 @@ impl Packet {
                 }
             }
             Shapes::Triangles(triangles) => {
-                let found = triangles.intersect(ray, t_min, closest.limit());
+                let found = triangles.intersect(ray);
                 for lane in lanes(found.hit & self.used) {
-                    let t = found.t.to_array()[lane];
-                    if t < closest.limit() {
+                    let t = triangles.t(lane, ray.ray);
+                    if t.is_finite() && t > t_min && t < closest.limit() {
                         closest.offer((t, found.weights(lane)), self.object[lane]);
                     }
                 }
@@ -203,8 +206,9 @@ impl Packet {
                 false
             }
             Shapes::Triangles(triangles) => {
-                let found = triangles.intersect(ray, t_min, t_max);
-                found.hit & casting != 0
+                let found = triangles.intersect(ray);
+                let within = |t: f32| t.is_finite() && t > t_min && t < t_max;
+                lanes(found.hit & casting).any(|lane| within(triangles.t(lane, ray.ray)))
                     || lanes(found.on_edge & casting).any(|lane| {
                         intersect_triangle(triangles.get(lane), ray.ray, t_min, t_max).is_some()
                     })
@@ -375,7 +379,6 @@ struct Found {
     hit: u32,
     /// Bit i: lane i is on an edge in f32, to be decided in f64.
     on_edge: u32,
-    t: Vec4,
     v: Vec4,
     w: Vec4,
     determinant: Vec4,
@@ -411,16 +414,21 @@ impl Triangles {
             .map(|c| Vec3::from_array(c.map(|axis| axis.to_array()[lane])))
     }
 
-    /// Chapter 2's watertight test (`intersect_triangle`) in four lanes:
-    /// each corner projected into the ray's space by the same products
-    /// and sums, the same edge functions, determinant and t.
+    /// Lane `lane`'s t, as chapter 2's `intersect_triangle` finds it.
+    fn t(&self, lane: usize, ray: &Ray) -> f32 {
+        triangle_plane_t(self.get(lane), ray) as f32
+    }
+
+    /// Chapter 2's watertight test (`intersect_triangle`) in four lanes, up
+    /// to its t ([`Triangles::t`]): the same products and sums, the same
+    /// edge functions and determinant.
     #[inline(always)]
-    fn intersect(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> Found {
+    fn intersect(&self, ray: &mut PreparedRay) -> Found {
         let shear = ray.shear();
         let [p0, p1, p2] = &self.corners;
-        let (x0, y0, z0) = shear.project4(&ray.origin, p0);
-        let (x1, y1, z1) = shear.project4(&ray.origin, p1);
-        let (x2, y2, z2) = shear.project4(&ray.origin, p2);
+        let (x0, y0) = shear.project4(&ray.origin, p0);
+        let (x1, y1) = shear.project4(&ray.origin, p1);
+        let (x2, y2) = shear.project4(&ray.origin, p2);
         let u = x2 * y1 - y2 * x1;
         let v = x0 * y2 - y0 * x2;
         let w = x1 * y0 - y1 * x0;
@@ -429,13 +437,10 @@ impl Triangles {
         let negative = u.cmplt(zero) | v.cmplt(zero) | w.cmplt(zero);
         let positive = u.cmpgt(zero) | v.cmpgt(zero) | w.cmpgt(zero);
         let determinant = u + v + w;
-        let t = (u * z0 + v * z1 + w * z2) / determinant;
         let inside = !(negative & positive) & determinant.cmpne(zero);
-        let within = t.is_finite_mask() & t.cmpgt(Vec4::splat(t_min)) & t.cmplt(Vec4::splat(t_max));
         Found {
-            hit: (inside & within & !on_edge).bitmask(),
+            hit: (inside & !on_edge).bitmask(),
             on_edge: on_edge.bitmask(),
-            t,
             v,
             w,
             determinant,

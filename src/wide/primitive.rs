@@ -116,8 +116,8 @@ pub struct Shear {
     /// The axes kx, ky, kz: z the one along which the ray travels fastest,
     /// x and y the others, in the order that keeps a triangle's winding.
     axes: [usize; 3],
-    /// sx = rd\[kx\] / rd\[kz\], sy = rd\[ky\] / rd\[kz\], sz = 1 / rd\[kz\].
-    scale: [f32; 3],
+    /// sx = rd\[kx\] / rd\[kz\], sy = rd\[ky\] / rd\[kz\].
+    scale: [f32; 2],
 }
 
 impl Shear {
@@ -130,30 +130,29 @@ impl Shear {
         }
         Shear {
             axes: [kx, ky, kz],
-            scale: [d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]],
+            scale: [d[kx] / d[kz], d[ky] / d[kz]],
         }
     }
 
-    /// Four corners in the ray's space, each coordinate in four lanes,
-    /// given r0's coordinates in four lanes: as chapter 2 computes one, with
-    /// p the corner less r0,
+    /// Four corners in the ray's space, x and y (the test needs no z: t
+    /// comes from the plane), each in four lanes, given r0's coordinates in
+    /// four lanes: as chapter 2 computes one, with p the corner less r0,
     ///
     /// ```text
-    /// x = p[kx] − sx·p[kz],  y = p[ky] − sy·p[kz],  z = sz·p[kz]
+    /// x = p[kx] − sx·p[kz],  y = p[ky] − sy·p[kz]
     /// ```
     #[inline(always)]
-    pub fn project4(&self, origin: &[Vec4; 3], corner: &[Vec4; 3]) -> (Vec4, Vec4, Vec4) {
+    pub fn project4(&self, origin: &[Vec4; 3], corner: &[Vec4; 3]) -> (Vec4, Vec4) {
         let p = [
             corner[0] - origin[0],
             corner[1] - origin[1],
             corner[2] - origin[2],
         ];
         let [kx, ky, kz] = self.axes;
-        let [sx, sy, sz] = self.scale;
+        let [sx, sy] = self.scale;
         (
             p[kx] - Vec4::splat(sx) * p[kz],
             p[ky] - Vec4::splat(sy) * p[kz],
-            Vec4::splat(sz) * p[kz],
         )
     }
 }

@@ -13,9 +13,12 @@
 //! * `planes`: parallel and almost parallel rays, against planes and a triangle;
 //! * `triangles`: shared edges and fan apexes without cracks (unlike
 //!   Möller–Trumbore), and rays along an edge;
-//! * `closest`: the closest hit of random shapes is the closest.
+//! * `closest`: the closest hit of random shapes is the closest;
+//! * `coincident`: surfaces in one place are decided by the rule for
+//!   coincident surfaces, whatever the order of traversal.
 
 mod closest;
+mod coincident;
 mod planes;
 mod spheres;
 mod triangles;

@@ -1,5 +1,6 @@
 #![doc = include_str!("../README.md")]
 
+mod coincident;
 mod cone;
 mod plane;
 mod sphere;
@@ -8,14 +9,15 @@ mod triangle;
 pub mod ray_tree;
 
 pub use ch01_rays::{Camera, Ray, render, scene_files, toolkit, workbench};
+pub use coincident::{coincidence_window, coincident_range, first_coincident};
 pub use cone::{cone_point, intersect_cone};
 pub use plane::{intersect_plane, plane_point};
 pub use sphere::{
     Quadratic, intersect_sphere, nearest_root, sphere_point, sphere_roots, sphere_roots_abc,
 };
 pub use triangle::{
-    barycentrics, intersect_triangle, smooth_normal, triangle_by_plane, triangle_normal,
-    triangle_point,
+    barycentrics, intersect_triangle, smooth_normal, triangle_by_plane, triangle_hit_point,
+    triangle_normal, triangle_plane_t, triangle_point,
 };
 
 use toolkit::scene::{Object, Shape};
@@ -105,10 +107,10 @@ pub fn hit_with_weights(
     object: usize,
 ) -> Hit {
     // Each point lies on its surface up to rounding (projected onto a sphere
-    // or plane; a triangle's is the barycentric mean of its corners), which
-    // bounds its error by a few units in the last place (f32::EPSILON
-    // relative) of the largest coordinate involved: the point's, and for a
-    // triangle its corners'. A cone's point is worked out in f64 and is
+    // or plane; a triangle's is the ray's point r(t) with t worked out again
+    // in f64, see triangle_hit_point), which bounds its error by a few units
+    // in the last place (f32::EPSILON relative) of the largest coordinate
+    // involved: the point's. A cone's point is worked out in f64 and is
     // off by its rounding to f32 only, as a sphere's is.
     let (point, normal, shading_normal, error) = match *shape {
         Shape::Sphere { center, radius } => {
@@ -123,15 +125,12 @@ pub fn hit_with_weights(
         }
         Shape::Triangle { vertices } | Shape::SmoothTriangle { vertices, .. } => {
             let normal = triangle_normal(vertices);
-            let point = triangle_point(vertices, weights);
+            let (point, error) = triangle_hit_point(vertices, weights, ray);
             let shading_normal = match *shape {
                 Shape::SmoothTriangle { normals, .. } => smooth_normal(normals, weights, normal),
                 _ => normal,
             };
-            let scale = vertices
-                .iter()
-                .fold(largest(point), |m, &v| m.max(largest(v)));
-            (point, normal, shading_normal, 8.0 * f32::EPSILON * scale)
+            (point, normal, shading_normal, error)
         }
         Shape::Cone {
             base,
@@ -162,10 +161,13 @@ fn largest(p: Vec3) -> f32 {
 }
 
 /// The hit of the object that the ray meets first, by the tracer's robust
-/// tests ([`intersect`]): [`closest_hit_by`] with them. Every chapter after
-/// this one traces with it.
+/// tests ([`intersect`]): [`closest_hit_by`] with them, and of surfaces
+/// that lie within their error bounds of that hit, the one listed first
+/// ([`first_coincident`], README, section *Coincident surfaces*). Every
+/// chapter after this one traces with it.
 pub fn closest_hit(objects: &[Object], ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
-    closest_hit_by(intersect, objects, ray, t_min, t_max)
+    let nearest = closest_hit_by(intersect, objects, ray, t_min, t_max)?;
+    Some(first_coincident(objects, ray, (t_min, t_max), nearest))
 }
 
 /// The hit of the object that the ray meets first: the smallest t, over
@@ -208,7 +210,8 @@ pub enum Method {
     /// The lecture's methods, your own: [`intersect_lecture`].
     #[default]
     Lecture,
-    /// The robust forms the later chapters trace with: [`intersect`].
+    /// The robust forms the later chapters trace with: [`intersect`], and
+    /// the rule for coincident surfaces ([`closest_hit`]).
     Robust,
 }
 
@@ -248,9 +251,12 @@ pub enum View {
 /// The colour seen along a primary ray in the chosen view, its closest hit
 /// found by `method`.
 pub fn shade(scene: &Scene, view: View, method: Method, ray: &Ray) -> Color {
-    let intersect =
-        |shape: &Shape, ray: &Ray, t_min, t_max| method.intersect(shape, ray, t_min, t_max);
-    let hit = closest_hit_by(intersect, &scene.objects, ray, 0.0, f32::INFINITY);
+    let hit = match method {
+        Method::Lecture => {
+            closest_hit_by(intersect_lecture, &scene.objects, ray, 0.0, f32::INFINITY)
+        }
+        Method::Robust => closest_hit(&scene.objects, ray, 0.0, f32::INFINITY),
+    };
     match (view, hit) {
         (View::Flat, Some(hit)) => scene.material(&scene.objects[hit.object]).color,
         (View::Normals, Some(hit)) => (hit.normal + Vec3::ONE) / 2.0,

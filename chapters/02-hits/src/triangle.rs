@@ -68,6 +68,15 @@ pub fn triangle_by_plane(
 /// with opposite signs, and a point on the edge (value 0) counts as inside
 /// both. When a value is exactly 0 in f32 we recompute it in f64, as the
 /// paper does, to decide its sign correctly.
+///
+/// The paper's t, the edge functions' mean of the corners' z, is off by
+/// rounding that follows the corners' distance from the ray's origin, not
+/// the hit's: for a floor whose corners are 10⁶ away it is off by about
+/// 0.1, and a shadow ray leaving the floor upwards finds the floor again
+/// just ahead (the README, section *A floor as large as the world*). So
+/// once the ray is known to pass through the triangle, t is worked out from
+/// the triangle's plane in f64 ([`triangle_plane_t`]): exact to its
+/// rounding to f32. As a bonus, two triangles in one plane get one t.
 pub fn intersect_triangle(
     [p0, p1, p2]: [Vec3; 3],
     ray: &Ray,
@@ -83,14 +92,14 @@ pub fn intersect_triangle(
         std::mem::swap(&mut kx, &mut ky);
     }
     // Shear so that the ray becomes the z axis from the origin.
-    let (sx, sy, sz) = (d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
+    let (sx, sy) = (d[kx] / d[kz], d[ky] / d[kz]);
     let project = |p: Vec3| {
         let p = p - ray.origin;
-        (p[kx] - sx * p[kz], p[ky] - sy * p[kz], sz * p[kz])
+        (p[kx] - sx * p[kz], p[ky] - sy * p[kz])
     };
-    let (x0, y0, z0) = project(p0);
-    let (x1, y1, z1) = project(p1);
-    let (x2, y2, z2) = project(p2);
+    let (x0, y0) = project(p0);
+    let (x1, y1) = project(p1);
+    let (x2, y2) = project(p2);
     // Edge functions: twice the signed area seen from the ray.
     let mut u = edge(x2, y2, x1, y1);
     let mut v = edge(x0, y0, x2, y2);
@@ -106,9 +115,23 @@ pub fn intersect_triangle(
     if outside || determinant == 0.0 {
         return None; // a miss, or a ray in the triangle's plane
     }
-    let t = (u * z0 + v * z1 + w * z2) / determinant;
+    let t = triangle_plane_t([p0, p1, p2], ray) as f32;
     let inside = t.is_finite() && t > t_min && t < t_max;
     inside.then(|| (t, v / determinant, w / determinant))
+}
+
+/// The distance t at which the ray meets the plane of the triangle
+/// (p₀, p₁, p₂), worked out in f64: t = N·(p₀ − r0) / N·rd, with
+/// N = e₁ × e₂ (not a number, or infinite, for a ray in or along the plane).
+///
+/// In f64 every product of two f32 inputs is exact, so N, p₀ − r0 and the
+/// quotient are exact to about 10⁻¹⁶ of their size, and t to far below its
+/// rounding to f32, whatever the size of the triangle.
+pub fn triangle_plane_t([p0, p1, p2]: [Vec3; 3], ray: &Ray) -> f64 {
+    let [p0, p1, p2] = [p0, p1, p2].map(|p| p.as_dvec3());
+    let origin = ray.origin.as_dvec3();
+    let n = (p1 - p0).cross(p2 - p0);
+    n.dot(p0 - origin) / n.dot(ray.direction.as_dvec3())
 }
 
 /// px·qy − py·qx, the edge function of the edge from p to q at the origin.
@@ -147,6 +170,57 @@ pub fn barycentrics(vertices: [Vec3; 3], ray: &Ray) -> (f32, f32) {
 /// relies on that bound.
 pub fn triangle_point([p0, p1, p2]: [Vec3; 3], (alpha, beta): (f32, f32)) -> Vec3 {
     (1.0 - alpha - beta) * p0 + alpha * p1 + beta * p2
+}
+
+/// The point where `ray` meets the plane of the triangle (p₀, p₁, p₂), and
+/// e, a bound on how far it lies off that plane: as accurate as the ray
+/// allows, however far the corners are.
+///
+/// Two ways to get the point, each with its bound:
+/// * the barycentric mean [`triangle_point`] of the corners: off the plane
+///   by a few units in the last place of the *corners'* coordinates, 8ε·|p|∞
+///   with p the largest corner (pbrt, 4th ed., section 6.8.4, "Bounding
+///   Intersection Point Error", bounds it so). A floor whose corners are 10⁶
+///   away from the point seen gets a point up to 0.5 off the floor, and a
+///   shadow ray offset as far.
+/// * the ray's own r(t) = r0 + t·rd, with t from the plane in f64
+///   ([`triangle_plane_t`]), which is exact to about 10⁻¹⁶ of its size, so the
+///   point is off the plane by its rounding to f32, under ε·|r(t)|∞ (the
+///   bound says 4ε·|r(t)|∞, as a sphere's does, so that chapter 4's offset
+///   clears it with room), plus 64·ε₆₄·(|p₀ − r0|∞ + |r0|∞ + |t|) for the
+///   f64 steps: its error follows the point, not the corners. The same section of pbrt re-projects a
+///   computed point onto a sphere's surface for the same reason; Wächter and
+///   Binder ("A Fast and Robust Method for Avoiding Self-Intersection", Ray
+///   Tracing Gems, chapter 6, 2019) prefer the barycentric point to r(t)
+///   only because r(t) from an f32 t carries t's error, which grows with
+///   the distance travelled. Worked out again in f64, it does not.
+///
+/// The one with the smaller bound is returned (nearly always r(t); the
+/// barycentric point for a ray in the triangle's plane, which has no t).
+/// The README, section *A floor as large as the world*, shows the
+/// difference on a picture.
+pub fn triangle_hit_point(vertices: [Vec3; 3], weights: (f32, f32), ray: &Ray) -> (Vec3, f32) {
+    let barycentric = triangle_point(vertices, weights);
+    let largest = |p: Vec3| p.abs().max_element();
+    let corners = vertices.iter().fold(0.0f32, |m, &v| m.max(largest(v)));
+    let by_corners = (
+        barycentric,
+        8.0 * f32::EPSILON * corners.max(largest(barycentric)),
+    );
+    let t = triangle_plane_t(vertices, ray);
+    if !t.is_finite() {
+        return by_corners;
+    }
+    let (origin, direction) = (ray.origin.as_dvec3(), ray.direction.as_dvec3());
+    let point = Vec3::from((origin + t * direction).as_vec3());
+    let to_corner = (vertices[0].as_dvec3() - origin).abs().max_element();
+    let f64_steps = to_corner + origin.abs().max_element() + t.abs();
+    let error = 4.0 * f32::EPSILON * largest(point) + (64.0 * f64::EPSILON * f64_steps) as f32;
+    if error < by_corners.1 {
+        (point, error)
+    } else {
+        by_corners
+    }
 }
 
 /// The shading normal of a smooth triangle at barycentric coordinates

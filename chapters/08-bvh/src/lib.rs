@@ -6,7 +6,7 @@ pub mod build;
 pub mod ray_tree;
 
 pub use aabb::{Aabb, bounds};
-pub use ch02_hits::{hit_at, intersect};
+pub use ch02_hits::{coincident_range, hit_at, intersect};
 pub use ch07_termination::{
     Camera, Hit, Ray, Termination, Tracer, World, closest_hit, render, render_whitted, scene_files,
     toolkit, workbench,
@@ -213,6 +213,66 @@ impl<'a> Search<'a> for Closest<'a, '_> {
     }
 }
 
+/// The second look that chapter 2's rule for coincident surfaces takes
+/// (`first_coincident`): of the primitives listed before the nearest hit's
+/// object, the first that the ray meets in (lower, upper).
+struct First<'a, 'r> {
+    ray: &'r Ray,
+    lower: f32,
+    upper: f32,
+    /// Only objects listed before this one can still win.
+    before: usize,
+    found: Option<(f32, &'a Primitive)>,
+}
+
+impl<'a> First<'a, '_> {
+    fn offer(&mut self, primitive: &'a Primitive) {
+        if primitive.object < self.before
+            && let Some(t) = intersect(&primitive.shape, self.ray, self.lower, self.upper)
+        {
+            self.before = primitive.object;
+            self.found = Some((t, primitive));
+        }
+    }
+}
+
+impl<'a> Search<'a> for First<'a, '_> {
+    /// The window's end: it does not move, whatever is found.
+    fn limit(&self) -> f32 {
+        self.upper
+    }
+
+    fn leaf(&mut self, primitives: &'a [Primitive]) -> bool {
+        primitives.iter().for_each(|p| self.offer(p));
+        false
+    }
+}
+
+impl Bvh {
+    /// Chapter 2's rule for coincident surfaces, with `nearest` the
+    /// nearest hit: a second walk of the tree, through the boxes that the
+    /// ray crosses in the window around it only.
+    fn first_coincident(&self, ray: &Ray, (t_min, t_max): (f32, f32), nearest: Hit) -> Hit {
+        if nearest.object == 0 {
+            return nearest; // nothing is listed before it
+        }
+        let (lower, upper) = coincident_range(&nearest, ray, t_min, t_max);
+        let mut first = First {
+            ray,
+            lower,
+            upper,
+            before: nearest.object,
+            found: None,
+        };
+        self.unbounded.iter().for_each(|p| first.offer(p));
+        self.traverse(ray, lower, &mut first);
+        match first.found {
+            Some((t, p)) => hit_at(&p.shape, ray, t, p.object),
+            None => nearest,
+        }
+    }
+}
+
 /// Is there any shadow-casting primitive on the ray in (t_min, t_max)?
 struct Blocker<'r> {
     ray: &'r Ray,
@@ -239,8 +299,10 @@ impl Search<'_> for Blocker<'_> {
     }
 }
 
-impl World for Bvh {
-    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+impl Bvh {
+    /// The nearest hit, as chapter 2's loop finds it, without its rule for
+    /// coincident surfaces (`closest_hit` applies it).
+    pub fn nearest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
         let mut closest = Closest {
             ray,
             t_min,
@@ -251,6 +313,13 @@ impl World for Bvh {
         self.traverse(ray, t_min, &mut closest);
         let (t, primitive) = closest.found?;
         Some(hit_at(&primitive.shape, ray, t, primitive.object))
+    }
+}
+
+impl World for Bvh {
+    fn closest_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<Hit> {
+        let nearest = self.nearest_hit(ray, t_min, t_max)?;
+        Some(self.first_coincident(ray, (t_min, t_max), nearest))
     }
 
     fn any_hit(&self, ray: &Ray, t_min: f32, t_max: f32) -> bool {

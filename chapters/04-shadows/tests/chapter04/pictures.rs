@@ -22,3 +22,16 @@ fn snapshot_box() {
     let scene = scene_file("box.toml").with_size(160, 120);
     assert_image("04-shadows", "box", &render(&scene, ShadowStart::Offset));
 }
+
+/// A floor of two triangles with corners 10⁶ away, a light 0.03 above it:
+/// the bright spot is smooth, as a plane's is (README, *A floor as large as
+/// the world*).
+#[test]
+fn snapshot_huge_floor() {
+    let scene = scene_file("huge-floor.toml");
+    assert_image(
+        "04-shadows",
+        "huge-floor",
+        &render(&scene, ShadowStart::Offset),
+    );
+}

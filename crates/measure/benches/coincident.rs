@@ -1,0 +1,134 @@
+//! What chapter 2's rule for coincident surfaces costs: the closest hit of
+//! every primary ray with the rule (`closest_hit`) against the nearest hit
+//! alone (`nearest_hit`, or chapter 2's `closest_hit_by` for a list).
+//!
+//! The rule costs a second look only when the nearest hit's object is not
+//! the first listed: through the objects listed before it (a list), or a
+//! second walk of the tree through the boxes that the ray crosses in the
+//! window around the hit (the BVHs). Rays that hit nothing cost nothing
+//! more.
+//!
+//! Run with `cargo bench --bench coincident`. As in `--bench small`, the
+//! two are timed in alternation, round after round, and the median of the
+//! per-round ratios is printed.
+
+use std::hint::black_box;
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use measure::bench::median;
+use raybook::scene_files::{self, nff};
+use raybook::toolkit::Scene;
+use raybook::toolkit::scene::{Object, Shape};
+use raybook::tracer::{Camera, Hit, Ray, World, closest_hit, closest_hit_by, intersect};
+use raybook::wide::WideBvh;
+
+const INF: f32 = f32::INFINITY;
+
+fn scenes() -> Vec<(&'static str, Scene)> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let toml = |path: &str| scene_files::load(root.join(path)).unwrap();
+    let spd = |name: &str| nff::load(root.join("scenes/spd").join(name)).unwrap();
+    vec![
+        (
+            "chapter 2 coincident",
+            toml("chapters/02-hits/scenes/coincident.toml"),
+        ),
+        (
+            "chapter 5",
+            toml("chapters/05-reflection/scenes/default.toml"),
+        ),
+        ("balls-4", spd("balls-4.nff")),
+        ("tetra-6", spd("tetra-6.nff")),
+        ("teapot-6", spd("teapot-6.nff")),
+        ("mount-6", spd("mount-6.nff")),
+    ]
+}
+
+/// One ray through each pixel's centre, at 256×192.
+fn primary_rays(scene: &Scene) -> Vec<Ray> {
+    let (width, height) = (256, 192);
+    let camera = Camera::new(&scene.camera, width, height);
+    (0..height)
+        .flat_map(|y| (0..width).map(move |x| (x, y)))
+        .map(|(x, y)| camera.primary_ray(x, y))
+        .collect()
+}
+
+type Trace<'a> = Box<dyn Fn(&Ray) -> Option<Hit> + 'a>;
+
+/// Median time of each way over the rays, in alternation, and the median
+/// ratio of the second to the first within a round.
+fn interleaved(rays: &[Ray], ways: &[Trace; 2]) -> (f64, f64, f64) {
+    const ROUNDS: usize = 15;
+    let mut times: [Vec<Duration>; 2] = Default::default();
+    for _ in 0..ROUNDS {
+        for (i, trace) in ways.iter().enumerate() {
+            let start = Instant::now();
+            for ray in rays {
+                black_box(trace(ray));
+            }
+            times[i].push(start.elapsed());
+        }
+    }
+    let ms = |d: &Duration| d.as_secs_f64() * 1e3;
+    let ratios = times[1].iter().zip(&times[0]).map(|(r, n)| ms(r) / ms(n));
+    (
+        median(times[0].iter().map(ms)),
+        median(times[1].iter().map(ms)),
+        median(ratios),
+    )
+}
+
+/// The share of rays whose nearest object is not the first listed, which
+/// take the rule's second look.
+fn second_looks(rays: &[Ray], objects: &[Object]) -> f64 {
+    let looks = rays
+        .iter()
+        .filter(|ray| {
+            closest_hit_by(intersect, objects, ray, 0.0, INF).is_some_and(|h| h.object > 0)
+        })
+        .count();
+    looks as f64 / rays.len() as f64
+}
+
+fn main() {
+    println!("| scene | tracer | nearest hit | with the rule | ratio | rays that look twice |");
+    println!("| --- | --- | ---: | ---: | ---: | ---: |");
+    for (name, scene) in scenes() {
+        let rays = primary_rays(&scene);
+        let objects = &scene.objects[..];
+        let wide = WideBvh::build(objects);
+        let mut tracers: Vec<(&str, [Trace; 2])> = vec![(
+            "wide BVH",
+            [
+                Box::new(|ray: &Ray| wide.nearest_hit(ray, 0.0, INF)),
+                Box::new(|ray: &Ray| wide.closest_hit(ray, 0.0, INF)),
+            ],
+        )];
+        if objects.len() <= 64 {
+            tracers.push((
+                "list",
+                [
+                    Box::new(|ray: &Ray| closest_hit_by(intersect, objects, ray, 0.0, INF)),
+                    Box::new(|ray: &Ray| closest_hit(objects, ray, 0.0, INF)),
+                ],
+            ));
+        }
+        let share = 100.0 * second_looks(&rays, objects);
+        let planes = objects
+            .iter()
+            .filter(|o| matches!(o.shape, Shape::Plane { .. }))
+            .count();
+        for (tracer, ways) in &tracers {
+            let (nearest, rule, ratio) = interleaved(&rays, ways);
+            println!(
+                "| {name} ({} objects, {planes} planes) | {tracer} | {nearest:.2} ms | {rule:.2} ms | {ratio:.3} | {share:.0}% |",
+                objects.len()
+            );
+        }
+    }
+    println!(
+        "\n(256×192 primary rays, one thread; median of 15 rounds, the two ways in alternation)"
+    );
+}
