@@ -66,10 +66,7 @@ impl Reference {
         let record = Record::of_workspace(root);
         say(&format!("reference {}: {}", record.label(), root.display()));
         let base = write_base(root, &files, &settings.cache.join("base"), &hash)?;
-        let students: Vec<PathBuf> = (chapters::all().iter())
-            .filter(|c| c.exercises)
-            .map(|c| c.path().join("src"))
-            .collect();
+        let students = students_folders();
         let shared = Shared::of_workspace(&base.copy, &students)?;
         seed_dependencies(root, &base, &shared);
         let mut binaries = BTreeMap::new();
@@ -105,6 +102,24 @@ impl Reference {
         })
     }
 
+    /// The reference at `root` as the outputs need it, read but not built:
+    /// for joining the slices of a class graded against it (`merge.rs`),
+    /// with the `tests` they recorded. Its pictures are read from `root`
+    /// itself, whose files the base copy holds.
+    pub fn read(root: &Path, exclude: &[PathBuf], tests: Tests) -> Result<Self, String> {
+        same_manifest(root)?;
+        let files = reference_files(root, exclude)?;
+        Ok(Reference {
+            record: Record::of_workspace(root),
+            hash: hash_of(root, &files)?,
+            tests,
+            base: Place::of(root),
+            shared: Shared::default(),
+            files,
+            students: students_folders(),
+        })
+    }
+
     /// Is `path` (relative to a handout's root) one of the student's own
     /// files, which grading takes from them?
     pub fn is_students(&self, path: &Path) -> bool {
@@ -131,6 +146,15 @@ impl Reference {
             .iter()
             .filter(move |e| e.chapter == folder)
     }
+}
+
+/// The folders whose files are the students' own: each exercise
+/// chapter's `src/`.
+fn students_folders() -> Vec<PathBuf> {
+    (chapters::all().iter())
+        .filter(|c| c.exercises)
+        .map(|c| c.path().join("src"))
+        .collect()
 }
 
 /// The chapter folder of a file under `chapters/`.

@@ -66,6 +66,43 @@ pub fn write(path: &Path, text: String) -> Result<PathBuf, String> {
     Ok(path.to_owned())
 }
 
+/// The class in a few lines: a student a line.
+pub fn print_table(class: &Class) {
+    println!(
+        "{:<24} {:>9}  {:<8}  {:<5}  {:>6}",
+        "student", "score", "compiled", "flags", "time"
+    );
+    for student in class.students {
+        let (score, max) = class.score(student);
+        let score = format!("{}/{}", points(score), points(max));
+        let compiled = match (&student.refused, student.compiled()) {
+            (Some(_), _) => "-",
+            (None, true) => "yes",
+            (None, false) => "no",
+        };
+        let time = format!("{:.0} s", student.seconds);
+        let flags = student.flags.len();
+        println!(
+            "{:<24} {score:>9}  {compiled:<8}  {flags:<5}  {time:>6}",
+            student.name
+        );
+    }
+}
+
+/// The reference, and where the outputs are.
+pub fn print_written(class: &Class, written: &[PathBuf]) {
+    println!("reference: raybook {}", class.label());
+    for path in written {
+        println!("wrote {}", path.display());
+    }
+}
+
+/// Writes `bytes` to `path` atomically.
+pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<(), String> {
+    crate::toolkit::image::write_atomically(path, bytes)
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
 /// Points as a teacher writes them: `2`, `1.5`.
 pub fn points(value: f64) -> String {
     if value.fract() == 0.0 {
