@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 
 use super::pool;
 use super::reference::{Reference, Settings};
+use super::report::copy_pictures;
 use super::result::StudentResult;
 use super::student::grade;
 use super::submission::{check, files, hash_files, ignore_rules};
@@ -158,12 +159,27 @@ fn one(
         settings_key(settings)
     );
     let cache = cache_path(&settings.cache, slug);
-    if !again && let Some(result) = cached(&cache, &key, name) {
+    // The pictures are kept in the cache with the result, and copied to
+    // where the report shows them: the cache may serve another output
+    // folder (--cache), whose report has never seen them.
+    let (kept, report) = (settings.cache.join("pictures"), out.join("report"));
+    if !again
+        && let Some(result) = cached(&cache, &key, name)
+        && copy_pictures(&result, &kept, &report).is_ok()
+    {
         return (result, false);
     }
     let work = settings.cache.join("work");
-    let pictures = out.join("report").join(slug);
-    let result = grade(&submission, slug, reference, settings, (&work, &pictures));
+    let mut result = grade(
+        &submission,
+        slug,
+        reference,
+        settings,
+        (&work, &kept.join(slug)),
+    );
+    if let Err(e) = copy_pictures(&result, &kept, &report) {
+        result.refused = Some(e);
+    }
     // Not graded here means grading itself failed (a file it could not
     // copy): the next run tries again.
     if result.refused.is_none() {

@@ -12,7 +12,7 @@
 //! results in the same order, with the points of `--points` (or
 //! `points.toml` in FINAL): the same gradebook and report, byte for byte.
 
-use std::path::{Component, Path, PathBuf};
+use std::path::{Path, PathBuf};
 
 use super::class::slugs;
 use super::reference::Reference;
@@ -222,30 +222,10 @@ fn join(slices: &[Slice]) -> Result<Vec<StudentResult>, String> {
 /// Each student's pictures, from their slice's report folder into `out`'s
 /// (only those their result names, regular files, within their folder).
 fn copy_pictures(slices: &[Slice], out: &Path) -> Result<(), String> {
-    let report = out.join("report");
     for slice in slices.iter().filter(|s| s.dir != out) {
         for student in &slice.data.students {
-            let _ = std::fs::remove_dir_all(report.join(&student.slug));
-            let pictures = student.chapters.iter().flat_map(|c| &c.pictures);
-            for diff in pictures.filter_map(|p| p.diff.as_ref()) {
-                let relative = Path::new(diff);
-                let inside = relative.starts_with(&student.slug)
-                    && relative
-                        .components()
-                        .all(|c| matches!(c, Component::Normal(_)));
-                let from = slice.dir.join("report").join(relative);
-                let regular = std::fs::symlink_metadata(&from).is_ok_and(|m| m.is_file());
-                if !inside || !regular {
-                    return Err(format!(
-                        "{}: the picture {diff} of {} is not a file of their report folder",
-                        slice.file.display(),
-                        student.name
-                    ));
-                }
-                let bytes = std::fs::read(&from)
-                    .map_err(|e| format!("cannot read {}: {e}", from.display()))?;
-                report::write_bytes(&report.join(relative), &bytes)?;
-            }
+            report::copy_pictures(student, &slice.dir.join("report"), &out.join("report"))
+                .map_err(|e| format!("{}: {e}", slice.file.display()))?;
         }
     }
     Ok(())

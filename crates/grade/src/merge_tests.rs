@@ -180,7 +180,7 @@ fn only_pictures_that_are_files_of_the_students_folder_are_copied() {
         });
         let error = copied(from.path()).unwrap_err();
         assert!(
-            error.contains("not a file of their report folder"),
+            error.contains("is not a file of their folder in"),
             "{error}"
         );
     }

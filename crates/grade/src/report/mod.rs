@@ -97,10 +97,33 @@ pub fn print_written(class: &Class, written: &[PathBuf]) {
     }
 }
 
-/// Writes `bytes` to `path` atomically.
-pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<(), String> {
-    crate::toolkit::image::write_atomically(path, bytes)
-        .map_err(|e| format!("cannot write {}: {e}", path.display()))
+/// Copies the pictures `student`'s result lists (paths relative to a
+/// report folder, in the student's own folder there) from the report
+/// folder `from` to the report folder `to`, whose folder of the student's
+/// holds only them afterwards. A picture that is not a regular file of
+/// the student's folder in `from` is refused.
+pub fn copy_pictures(student: &StudentResult, from: &Path, to: &Path) -> Result<(), String> {
+    let _ = std::fs::remove_dir_all(to.join(&student.slug));
+    let pictures = student.chapters.iter().flat_map(|c| &c.pictures);
+    for diff in pictures.filter_map(|p| p.diff.as_ref()) {
+        let relative = Path::new(diff);
+        let inside = relative.starts_with(&student.slug)
+            && (relative.components()).all(|c| matches!(c, std::path::Component::Normal(_)));
+        let source = from.join(relative);
+        let regular = std::fs::symlink_metadata(&source).is_ok_and(|m| m.is_file());
+        if !inside || !regular {
+            return Err(format!(
+                "the picture {diff} of {} is not a file of their folder in {}",
+                student.name,
+                from.display()
+            ));
+        }
+        let bytes =
+            std::fs::read(&source).map_err(|e| format!("cannot read {}: {e}", source.display()))?;
+        crate::toolkit::image::write_atomically(&to.join(relative), &bytes)
+            .map_err(|e| format!("cannot write {}: {e}", to.join(relative).display()))?;
+    }
+    Ok(())
 }
 
 /// Points as a teacher writes them: `2`, `1.5`.
