@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 
 use super::pool;
 use super::reference::{Reference, Settings};
+use super::report::copy_pictures;
 use super::result::StudentResult;
 use super::student::grade;
 use super::submission::{check, files, hash_files, ignore_rules};
@@ -64,17 +65,18 @@ struct Cached {
     result: StudentResult,
 }
 
-/// Grades the students `names` of `class` (`again`: ignoring the cache),
-/// `settings.jobs` side by side; the results, in the order of `names`,
-/// and how many were graded (not read from the cache).
+/// Grades the students `names` of `class`, whose slugs are `slugs` (made
+/// from the whole class's names, so that a slice of it names each student
+/// as the whole class does), `again`: ignoring the cache, `settings.jobs`
+/// side by side; the results, in the order of `names`, and how many were
+/// graded (not read from the cache).
 pub fn grade_class(
     class: &Path,
-    names: &[String],
+    (names, slugs): (&[String], &[String]),
     reference: &Reference,
     settings: &Settings,
     (out, again): (&Path, bool),
 ) -> (Vec<StudentResult>, usize) {
-    let slugs = slugs(names);
     let bar = progress_bar(names.len());
     let mut results: Vec<Option<StudentResult>> = vec![None; names.len()];
     let mut graded = 0;
@@ -156,13 +158,28 @@ fn one(
         reference.hash,
         settings_key(settings)
     );
-    let cache = cache_path(out, slug);
-    if !again && let Some(result) = cached(&cache, &key, name) {
+    let cache = cache_path(&settings.cache, slug);
+    // The pictures are kept in the cache with the result, and copied to
+    // where the report shows them: the cache may serve another output
+    // folder (--cache), whose report has never seen them.
+    let (kept, report) = (settings.cache.join("pictures"), out.join("report"));
+    if !again
+        && let Some(result) = cached(&cache, &key, name)
+        && copy_pictures(&result, &kept, &report).is_ok()
+    {
         return (result, false);
     }
-    let work = out.join(".cache/work");
-    let pictures = out.join("report").join(slug);
-    let result = grade(&submission, slug, reference, settings, (&work, &pictures));
+    let work = settings.cache.join("work");
+    let mut result = grade(
+        &submission,
+        slug,
+        reference,
+        settings,
+        (&work, &kept.join(slug)),
+    );
+    if let Err(e) = copy_pictures(&result, &kept, &report) {
+        result.refused = Some(e);
+    }
     // Not graded here means grading itself failed (a file it could not
     // copy): the next run tries again.
     if result.refused.is_none() {
@@ -171,19 +188,25 @@ fn one(
     (result, true)
 }
 
-/// What in the settings changes a result.
-fn settings_key(settings: &Settings) -> String {
-    let chapters: Vec<&str> = settings
-        .chapters
-        .iter()
-        .map(|c| c.folder.as_str())
-        .collect();
-    format!("{chapters:?} {:?} {:?}", settings.build, settings.test)
+/// What in the settings changes a result: all of them but how many run
+/// side by side and where the cache and the outputs are. Written from the
+/// settings as a whole, so that a setting added later (the seed of what is
+/// judged) is part of it without more code: it keys the cache, and slices
+/// of a class merge only if theirs are equal (`merge.rs`).
+pub fn settings_key(settings: &Settings) -> String {
+    let what_changes_a_result = Settings {
+        jobs: 0,
+        cargo_jobs: 0,
+        cache: PathBuf::new(),
+        exclude: Vec::new(),
+        ..settings.clone()
+    };
+    format!("{what_changes_a_result:?}")
 }
 
-/// Where a student's result is cached.
-fn cache_path(out: &Path, slug: &str) -> PathBuf {
-    out.join(".cache/students").join(format!("{slug}.json"))
+/// Where a student's result is cached (`cache`: the grading cache folder).
+fn cache_path(cache: &Path, slug: &str) -> PathBuf {
+    cache.join("students").join(format!("{slug}.json"))
 }
 
 /// The cached result, if it was made from `key` for this student.

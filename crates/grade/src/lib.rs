@@ -76,6 +76,7 @@ mod digest;
 mod judge;
 mod mapping;
 mod outbound;
+mod merge;
 mod outcomes;
 mod points;
 mod pool;
@@ -86,6 +87,7 @@ mod report;
 mod result;
 mod room;
 mod sandbox;
+mod shard;
 mod share;
 mod student;
 mod submission;
@@ -111,7 +113,7 @@ const CACHE_FORMAT: &str = "grade-cache-2";
 pub struct GradeArgs {
     /// The class: a folder with one subfolder per student, each a handout
     /// (a plain folder or a git checkout).
-    #[arg(required_unless_present = "one", conflicts_with = "one")]
+    #[arg(required_unless_present_any = ["one", "merge"], conflicts_with_all = ["one", "merge"])]
     pub students: Option<PathBuf>,
 
     /// Grade one submission (a handout folder) instead of a class, as
@@ -185,6 +187,29 @@ pub struct GradeArgs {
     /// Give the same one to reproduce a report.
     #[arg(long, value_name = "N")]
     pub seed: Option<u64>,
+
+    /// Grade the K-th of N slices of the class (1 ≤ K ≤ N), on one of N
+    /// machines: a student's slice is a hash of their folder's name, so it
+    /// stays the same when students are added. Writes
+    /// `shard-K-of-N.json` (and the slice's pictures) into the output
+    /// folder, for `--merge`; the points are applied there.
+    #[arg(long, value_name = "K/N", conflicts_with = "one")]
+    pub shard: Option<shard::Shard>,
+
+    /// Join the slices in these folders (each holds `shard-K-of-N.json`
+    /// files, from `--shard`) into the outputs of one run over the whole
+    /// class. Refuses slices that were graded against other references,
+    /// settings or chapters, or of another class, and a slice that is
+    /// missing or given twice.
+    #[arg(long, value_name = "DIR", num_args = 1.., conflicts_with_all = ["one", "shard"])]
+    pub merge: Vec<PathBuf>,
+
+    /// Where to keep the cache: the reference's build, the students'
+    /// copies and their results (default: .cache in the output folder).
+    /// On a cluster, a node's own disk builds faster than a shared one.
+    /// One grading at a time in a cache folder.
+    #[arg(long, value_name = "DIR")]
+    pub cache: Option<PathBuf>,
 }
 
 /// Runs `grade`.
@@ -198,7 +223,8 @@ pub fn main(args: &GradeArgs) -> ExitCode {
     }
 }
 
-/// Prepares the reference, grades the students, writes the outputs.
+/// Prepares the reference, grades the students (or the slice `--shard`
+/// names), writes the outputs; or, with `--merge`, joins slices.
 fn grade(args: &GradeArgs) -> Result<(), String> {
     let root = match &args.reference {
         Some(dir) => dir
@@ -212,6 +238,9 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
         .unwrap_or_else(|| root.join("target/grade"));
     std::fs::create_dir_all(&out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let out = out.canonicalize().map_err(|e| e.to_string())?;
+    if !args.merge.is_empty() {
+        return merge::main(args, &root, &out);
+    }
     let (class, names) = students(args)?;
     let settings = settings(args, &out, &class)?;
     sandbox_setup(args)?;
@@ -222,8 +251,18 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     let reference = Reference::prepare(&root, &settings, &|line| eprintln!("{line}"))?;
     let prepared = start.elapsed();
     let start = Instant::now();
-    let (results, graded) =
-        class::grade_class(&class, &names, &reference, &settings, (&out, args.again));
+    let slugs = class::slugs(&names);
+    let (chosen, chosen_slugs): (Vec<String>, Vec<String>) = (names.iter().cloned())
+        .zip(slugs)
+        .filter(|(name, _)| args.shard.is_none_or(|shard| shard.holds(name)))
+        .unzip();
+    let (results, graded) = class::grade_class(
+        &class,
+        (&chosen, &chosen_slugs),
+        &reference,
+        &settings,
+        (&out, args.again),
+    );
     let took = start.elapsed();
     let ids: Vec<_> = reference.tests.exercises.clone();
     let points = points::Points::load(args.points.as_deref(), &out, &ids)?;
@@ -232,15 +271,36 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
         points: &points,
         students: &results,
     };
-    let written = report::write_all(&out, &class_outputs)?;
+    let written = match args.shard {
+        Some(shard) => {
+            let graded_with = shard::graded_with(&reference, &settings, names.clone());
+            let file = shard::ShardFile {
+                shard,
+                graded_with,
+                students: results.clone(),
+            };
+            vec![shard::write(&out, &file)?]
+        }
+        None => report::write_all(&out, &class_outputs)?,
+    };
     if let (Some(path), Some(student)) = (&args.gradescope, results.first()) {
         report::write(path, report::results_json(&class_outputs, student))?;
     }
-    print_summary(
-        &class_outputs,
-        &written,
-        (prepared, took, graded, settings.jobs),
+    report::print_table(&class_outputs);
+    let refused = results.iter().filter(|s| s.refused.is_some()).count();
+    let unchanged = results.len() - graded - refused;
+    println!(
+        "\nreference prepared in {:.0} s; students: {graded} graded in {:.0} s ({} side \
+         by side), {unchanged} unchanged since the last run, {refused} not graded",
+        prepared.as_secs_f64(),
+        took.as_secs_f64(),
+        settings.jobs
     );
+    if let Some(shard) = args.shard {
+        let (slice, of) = (results.len(), names.len());
+        println!("slice {shard}: {slice} of the class's {of} students");
+    }
+    report::print_written(&class_outputs, &written);
     Ok(())
 }
 
@@ -301,14 +361,18 @@ fn settings(args: &GradeArgs, out: &Path, class: &Path) -> Result<Settings, Stri
         memory: args.memory << 20,
         output: (args.output as usize) << 20,
     };
+    let cache = args.cache.clone().unwrap_or_else(|| out.join(".cache"));
+    std::fs::create_dir_all(&cache)
+        .map_err(|e| format!("cannot create {}: {e}", cache.display()))?;
+    let cache = cache.canonicalize().map_err(|e| e.to_string())?;
     Ok(Settings {
         chapters: chosen_chapters(args.chapters.as_deref())?,
         build: limits(args.build_timeout),
         test: limits(args.timeout),
         cargo_jobs: (cores / jobs).max(1),
         jobs,
-        cache: out.join(".cache"),
-        exclude: vec![out.to_owned(), class.to_owned()],
+        exclude: vec![out.to_owned(), class.to_owned(), cache.clone()],
+        cache,
         seed: probe::seed(args.seed),
     })
 }
@@ -344,52 +408,6 @@ pub fn chosen_chapters(list: Option<&str>) -> Result<Vec<&'static ChapterEntry>,
             "--chapters {list}: chapter {n} has no exercises to grade"
         )),
         None => Ok(chosen),
-    }
-}
-
-/// The class in a few lines, and where the outputs are.
-fn print_summary(
-    class: &report::Class,
-    written: &[PathBuf],
-    (prepared, took, graded, jobs): (Duration, Duration, usize, usize),
-) {
-    println!(
-        "{:<24} {:>9}  {:<8}  {:<5}  {:>6}",
-        "student", "score", "compiled", "flags", "time"
-    );
-    for student in class.students {
-        let (score, max) = class.score(student);
-        let score = format!("{}/{}", report::points(score), report::points(max));
-        let compiled = match (&student.refused, student.compiled()) {
-            (Some(_), _) => "-",
-            (None, true) => "yes",
-            (None, false) => "no",
-        };
-        let time = format!("{:.0} s", student.seconds);
-        let flags = student.flags.len();
-        println!(
-            "{:<24} {score:>9}  {compiled:<8}  {flags:<5}  {time:>6}",
-            student.name
-        );
-    }
-    let refused = class
-        .students
-        .iter()
-        .filter(|s| s.refused.is_some())
-        .count();
-    let unchanged = class.students.len() - graded - refused;
-    println!(
-        "\nreference prepared in {:.0} s; students: {graded} graded in {:.0} s ({jobs} side \
-         by side), {unchanged} unchanged since the last run, {refused} not graded",
-        prepared.as_secs_f64(),
-        took.as_secs_f64()
-    );
-    println!("reference: raybook {}", class.label());
-    if confine::unsandboxed() {
-        println!("WARNING: {}", confine::UNSANDBOXED);
-    }
-    for path in written {
-        println!("wrote {}", path.display());
     }
 }
 

@@ -72,17 +72,12 @@ impl Reference {
     pub fn prepare(root: &Path, settings: &Settings, say: &dyn Fn(&str)) -> Result<Self, String> {
         same_manifest(root)?;
         let files = reference_files(root, &settings.exclude)?;
-        let probe_files = probe::files(root)?;
-        let mut hashed = files.clone();
-        hashed.extend(probe_files.iter().map(|f| (f.clone(), ())));
+        let (probe_files, hashed) = with_probe(root, &files)?;
         let hash = hash_of(root, &hashed)?;
         let record = Record::of_workspace(root);
         say(&format!("reference {}: {}", record.label(), root.display()));
         let base = write_base(root, &hashed, &settings.cache.join("base"), &hash)?;
-        let students: Vec<PathBuf> = (chapters::all().iter())
-            .filter(|c| c.exercises)
-            .map(|c| c.path().join("src"))
-            .collect();
+        let students = students_folders();
         let shared = Shared::of_workspace(&base.copy, &students)?;
         seed_dependencies(root, &base, &shared);
         let mut binaries = BTreeMap::new();
@@ -128,6 +123,28 @@ impl Reference {
         })
     }
 
+    /// The reference at `root` as the outputs need it, read but not built:
+    /// for joining the slices of a class graded against it (`merge.rs`),
+    /// with the `tests` they recorded. Its pictures are read from `root`
+    /// itself, whose files the base copy holds.
+    pub fn read(root: &Path, exclude: &[PathBuf], tests: Tests) -> Result<Self, String> {
+        same_manifest(root)?;
+        let files = reference_files(root, exclude)?;
+        let (probe_files, hashed) = with_probe(root, &files)?;
+        Ok(Reference {
+            record: Record::of_workspace(root),
+            root: root.to_owned(),
+            hash: hash_of(root, &hashed)?,
+            tests,
+            base: Place::of(root),
+            shared: Shared::default(),
+            probe_files,
+            expected: Expected::default(),
+            files,
+            students: students_folders(),
+        })
+    }
+
     /// Is `path` (relative to a handout's root) one of the student's own
     /// files, which grading takes from them?
     pub fn is_students(&self, path: &Path) -> bool {
@@ -154,6 +171,28 @@ impl Reference {
             .iter()
             .filter(move |e| e.chapter == folder)
     }
+}
+
+/// The probe's files (teacher-only, so not among a handout's `files`),
+/// and `files` with them: what the reference's hash covers, since the
+/// probe decides the points.
+fn with_probe(
+    root: &Path,
+    files: &BTreeMap<PathBuf, ()>,
+) -> Result<(Vec<PathBuf>, BTreeMap<PathBuf, ()>), String> {
+    let probe_files = probe::files(root)?;
+    let mut hashed = files.clone();
+    hashed.extend(probe_files.iter().map(|f| (f.clone(), ())));
+    Ok((probe_files, hashed))
+}
+
+/// The folders whose files are the students' own: each exercise
+/// chapter's `src/`.
+fn students_folders() -> Vec<PathBuf> {
+    (chapters::all().iter())
+        .filter(|c| c.exercises)
+        .map(|c| c.path().join("src"))
+        .collect()
 }
 
 /// The chapter folder of a file under `chapters/`.

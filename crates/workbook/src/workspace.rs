@@ -72,12 +72,15 @@ pub struct Written {
 /// and its `[[lecture]]` entries the lecture's own solutions), and the
 /// grader (`crates/grade`: its fixture writes solutions, and grading is
 /// not the student's tool) and its probe (`crates/grade-probe`: how the
-/// grader draws the inputs it judges on). The maintainers' checks read
-/// them from the reference.
+/// grader draws the inputs it judges on), and `.github/`: the teacher's own
+/// workflows (such as grading the class in slices), which a student's
+/// repository must not get. The maintainers' checks read them from the
+/// reference.
 pub fn teacher_only(file: &Path) -> bool {
     let mistakes = file.starts_with("chapters")
         && file.file_name().is_some_and(|name| name == "mistakes.toml");
-    mistakes || file.starts_with(GRADER) || file.starts_with(PROBE)
+    let teacher = [GRADER, PROBE, ".github"];
+    mistakes || teacher.iter().any(|folder| file.starts_with(folder))
 }
 
 /// The teacher's grader, which no handout holds.
@@ -231,5 +234,23 @@ mod tests {
         let root = workspace_root(&here.join("chapters/03-lambert/src")).unwrap();
         assert_eq!(root, here);
         assert!(workspace_root(&std::env::temp_dir()).is_err());
+    }
+
+    #[test]
+    fn the_teachers_files_stay_out_of_a_handout() {
+        for file in [
+            "chapters/03-lambert/mistakes.toml",
+            "crates/grade/teacher/slurm-grade.sh",
+            ".github/workflows/grade.yml",
+        ] {
+            assert!(teacher_only(Path::new(file)), "{file}");
+        }
+        for file in [
+            "chapters/03-lambert/src/lib.rs",
+            "crates/workbook/src/lib.rs",
+            ".gitignore",
+        ] {
+            assert!(!teacher_only(Path::new(file)), "{file}");
+        }
     }
 }

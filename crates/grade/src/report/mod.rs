@@ -66,6 +66,69 @@ pub fn write(path: &Path, text: String) -> Result<PathBuf, String> {
     Ok(path.to_owned())
 }
 
+/// The class in a few lines: a student a line.
+pub fn print_table(class: &Class) {
+    println!(
+        "{:<24} {:>9}  {:<8}  {:<5}  {:>6}",
+        "student", "score", "compiled", "flags", "time"
+    );
+    for student in class.students {
+        let (score, max) = class.score(student);
+        let score = format!("{}/{}", points(score), points(max));
+        let compiled = match (&student.refused, student.compiled()) {
+            (Some(_), _) => "-",
+            (None, true) => "yes",
+            (None, false) => "no",
+        };
+        let time = format!("{:.0} s", student.seconds);
+        let flags = student.flags.len();
+        println!(
+            "{:<24} {score:>9}  {compiled:<8}  {flags:<5}  {time:>6}",
+            student.name
+        );
+    }
+}
+
+/// The reference, and where the outputs are.
+pub fn print_written(class: &Class, written: &[PathBuf]) {
+    println!("reference: raybook {}", class.label());
+    if crate::confine::unsandboxed() {
+        println!("WARNING: {}", crate::confine::UNSANDBOXED);
+    }
+    for path in written {
+        println!("wrote {}", path.display());
+    }
+}
+
+/// Copies the pictures `student`'s result lists (paths relative to a
+/// report folder, in the student's own folder there) from the report
+/// folder `from` to the report folder `to`, whose folder of the student's
+/// holds only them afterwards. A picture that is not a regular file of
+/// the student's folder in `from` is refused.
+pub fn copy_pictures(student: &StudentResult, from: &Path, to: &Path) -> Result<(), String> {
+    let _ = std::fs::remove_dir_all(to.join(&student.slug));
+    let pictures = student.chapters.iter().flat_map(|c| &c.pictures);
+    for diff in pictures.filter_map(|p| p.diff.as_ref()) {
+        let relative = Path::new(diff);
+        let inside = relative.starts_with(&student.slug)
+            && (relative.components()).all(|c| matches!(c, std::path::Component::Normal(_)));
+        let source = from.join(relative);
+        let regular = std::fs::symlink_metadata(&source).is_ok_and(|m| m.is_file());
+        if !inside || !regular {
+            return Err(format!(
+                "the picture {diff} of {} is not a file of their folder in {}",
+                student.name,
+                from.display()
+            ));
+        }
+        let bytes =
+            std::fs::read(&source).map_err(|e| format!("cannot read {}: {e}", source.display()))?;
+        crate::toolkit::image::write_atomically(&to.join(relative), &bytes)
+            .map_err(|e| format!("cannot write {}: {e}", to.join(relative).display()))?;
+    }
+    Ok(())
+}
+
 /// Points as a teacher writes them: `2`, `1.5`.
 pub fn points(value: f64) -> String {
     if value.fract() == 0.0 {
