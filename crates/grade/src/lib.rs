@@ -182,9 +182,10 @@ pub struct GradeArgs {
     #[arg(long)]
     pub again: bool,
 
-    /// The seed of the exercises' inputs and scenes (default: drawn anew;
-    /// either way kept in seed.txt in the output folder, never handed out).
-    /// Give the same one to reproduce a report.
+    /// The seed of the exercises' inputs and scenes (default: the one in
+    /// seed.txt in the output folder from an earlier run, else drawn anew;
+    /// either way kept there, never handed out). Give the same one to
+    /// reproduce a report; every slice of a class (--shard) needs the same.
     #[arg(long, value_name = "N")]
     pub seed: Option<u64>,
 
@@ -354,6 +355,12 @@ fn students(args: &GradeArgs) -> Result<(PathBuf, Vec<String>), String> {
 
 /// The settings the arguments give.
 fn settings(args: &GradeArgs, out: &Path, class: &Path) -> Result<Settings, String> {
+    if let (Some(shard), None) = (&args.shard, args.seed) {
+        return Err(format!(
+            "--shard {shard}: every slice must judge on the same inputs; give each the same \
+             --seed N (the Slurm and GitHub examples draw one for the whole class)"
+        ));
+    }
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let jobs = args.jobs.unwrap_or(cores).max(1);
     let limits = |seconds| Limits {
@@ -373,7 +380,7 @@ fn settings(args: &GradeArgs, out: &Path, class: &Path) -> Result<Settings, Stri
         jobs,
         exclude: vec![out.to_owned(), class.to_owned(), cache.clone()],
         cache,
-        seed: probe::seed(args.seed),
+        seed: probe::seed(args.seed, &out.join("seed.txt")),
     })
 }
 

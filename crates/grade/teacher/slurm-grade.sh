@@ -35,6 +35,8 @@
 #   GRADE       the grade binary (default: built here, target/debug/grade)
 #   CACHE       one cache folder for every slice (only for slices that run
 #               one after another: one grading at a time in a cache)
+#   SEED        the seed every slice draws its inputs from (default: drawn
+#               once by the submission, kept in $OUT/seed.txt)
 #
 # Every slice must be graded with the same reference, settings and seed:
 # the merge refuses slices that differ, or that are missing.
@@ -66,11 +68,16 @@ submit() {
   OUT=$(realpath "$OUT")
   REFERENCE=${REFERENCE:-$(cd "$(dirname "$script")/../../.." && pwd)}
   SHARDS=${SHARDS:-$(shards_in_header "$script")}
+  # One seed for the whole class, kept by the teacher, never handed out.
+  if [[ -z ${SEED:-} ]]; then
+    SEED=$(cat "$OUT/seed.txt" 2>/dev/null || od -An -N8 -tu8 /dev/urandom | tr -d ' ')
+  fi
+  echo "$SEED" >"$OUT/seed.txt"
   if [[ -z ${GRADE:-} ]]; then
     (cd "$REFERENCE" && cargo build -q -p grade)
     GRADE=$REFERENCE/target/debug/grade
   fi
-  export CLASS OUT SHARDS REFERENCE GRADE GRADE_ARGS="${GRADE_ARGS:-}" POINTS="${POINTS:-}" CACHE="${CACHE:-}"
+  export CLASS OUT SHARDS SEED REFERENCE GRADE GRADE_ARGS="${GRADE_ARGS:-}" POINTS="${POINTS:-}" CACHE="${CACHE:-}"
   array=$(sbatch --parsable --array="0-$((SHARDS - 1))" "$script" shard)
   array=${array%%;*} # "id;cluster" on a federation
   merge=$(sbatch --parsable --dependency="afterok:$array" --job-name=raybook-merge \
@@ -90,6 +97,7 @@ defaults() {
 # SLURM_ARRAY_TASK_COUNT.
 shard() {
   : "${SLURM_ARRAY_TASK_ID:?not a task of a job array}" "${CLASS:?}" "${OUT:?}"
+  : "${SEED:=$(cat "$OUT/seed.txt")}"
   local n=${SLURM_ARRAY_TASK_COUNT:?} k=$((SLURM_ARRAY_TASK_ID + 1)) extra=()
   if [[ ${SLURM_ARRAY_TASK_MIN:-0} != 0 || ${SHARDS:-$n} != "$n" ]]; then
     echo "the array must be --array=0-$((${SHARDS:-$n} - 1)), one task a slice" >&2
@@ -98,7 +106,7 @@ shard() {
   defaults
   read -ra extra <<<"${GRADE_ARGS:-}"
   if [[ -n ${CACHE:-} ]]; then extra+=(--cache "$CACHE"); fi
-  "$GRADE" "$CLASS" --shard "$k/$n" --out "$OUT/shard-$k-of-$n" \
+  "$GRADE" "$CLASS" --shard "$k/$n" --seed "$SEED" --out "$OUT/shard-$k-of-$n" \
     --reference "$REFERENCE" "${extra[@]}"
 }
 

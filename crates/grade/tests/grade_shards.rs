@@ -58,7 +58,8 @@ fn a_class_graded_in_slices_and_merged_gets_the_outputs_of_one_run() {
             "--cache".into(),
             cache.clone().into(),
         ];
-        args.extend(["--chapters".into(), "1".into(), "--reference".into()]);
+        args.extend(["--chapters".into(), "1".into(), "--seed".into(), "2026".into()]);
+        args.push("--reference".into());
         args.push(reference.clone().into());
         args
     };
@@ -302,6 +303,7 @@ fn slurm_script(base: &Path, class: &Path, reference: &Path, out: &Path) -> Stri
         .env("GRADE", env!("CARGO_BIN_EXE_grade"))
         .env("GRADE_ARGS", "--chapters 1")
         .env("CACHE", base.join("cache"))
+        .env("SEED", "2026")
         .env_remove("SLURM_ARRAY_TASK_ID")
         .output()
         .unwrap();
