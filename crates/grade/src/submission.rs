@@ -306,7 +306,6 @@ fn same_lock(theirs: &Path, reference: &Path) -> Result<bool, String> {
     Ok(without(read(theirs)?) == without(read(reference)?))
 }
 
-
 /// Do the student's file and the reference's hold the same bytes? Sizes
 /// first, so that a huge file is never read.
 fn same_bytes(theirs: &Path, reference: &Path) -> Result<bool, String> {

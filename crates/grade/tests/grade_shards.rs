@@ -58,7 +58,12 @@ fn a_class_graded_in_slices_and_merged_gets_the_outputs_of_one_run() {
             "--cache".into(),
             cache.clone().into(),
         ];
-        args.extend(["--chapters".into(), "1".into(), "--seed".into(), "2026".into()]);
+        args.extend([
+            "--chapters".into(),
+            "1".into(),
+            "--seed".into(),
+            "2026".into(),
+        ]);
         args.push("--reference".into());
         args.push(reference.clone().into());
         args

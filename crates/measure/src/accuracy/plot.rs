@@ -35,9 +35,12 @@ const COLOURS: [RGBColor; 8] = [
 
 type Drawn = Result<(), Box<dyn Error>>;
 
+/// A plot's file name and what draws it.
+type Plot<'a> = (&'a str, &'a dyn Fn(&Study, &Path) -> Drawn);
+
 /// Writes every plot into `folder`, each atomically, and returns their paths.
 pub fn plot_all(study: &Study, folder: &Path) -> Result<Vec<PathBuf>, String> {
-    let plots: [(&str, &dyn Fn(&Study, &Path) -> Drawn); 5] = [
+    let plots: [Plot; 5] = [
         ("accuracy-samples.svg", &samples_plot),
         ("accuracy-depths.svg", &depths_plot),
         ("accuracy-time.svg", &|s, p| cost_plot(s, Cost::Time, p)),
