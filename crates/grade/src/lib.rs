@@ -1,11 +1,18 @@
 //! `cargo run -p grade`: a teacher grades a class, every student's handout in
 //! one run, or one submission as Gradescope's autograder runs it.
 //!
-//! For each student, each chapter's tests passed and failed, each exercise
-//! passed or not (it passes when every test that fails without its solution
-//! passes: see `mapping.rs`), the first failing test's message, the time
-//! taken, whether it compiled. Outputs (`report/`): a CSV gradebook, a
-//! Gradescope `results.json` per student, JUnit XML, an HTML class report.
+//! For each student, each exercise passed or not, and each chapter's tests
+//! passed and failed, the first failing test's message, the time taken,
+//! whether it compiled. An exercise passes when the values the student's
+//! function computed on inputs drawn from a seed agree with the
+//! reference's, judged outside the sandbox, and its chapter's seeded
+//! scenes agree too (`judge.rs` states the rule, `probe.rs` runs the
+//! teacher's probe, `crates/grade-probe`); the chapters' tests run for the
+//! feedback their messages give, and decide only an exercise no probe
+//! covers (`mapping.rs`). The seed is drawn at grading time and kept in the
+//! output folder, never in a handout. Outputs (`report/`): a CSV
+//! gradebook, a Gradescope `results.json` per student, JUnit XML, an HTML
+//! class report.
 //!
 //! Student code is untrusted. What grading does about it:
 //! * it runs in a fresh copy, never in the student's folder, which is only
@@ -49,10 +56,12 @@
 //!   runs code at compile time runs it inside the same sandbox;
 //! * the students' own copies: within its run, a student's code may write
 //!   its own `target/` (its own build, its own failure pictures), so what
-//!   the tests print and write is theirs to forge. Points therefore must
-//!   not come from a student's own report of itself but from what its code
-//!   computed, judged outside the sandbox; the pictures leave only through
-//!   `outbound.rs`;
+//!   the tests print and write is theirs to forge. Points therefore come
+//!   not from a student's own report of itself but from the values its
+//!   code computed on inputs it never saw, judged outside the sandbox
+//!   (`judge.rs`); the pictures leave only through `outbound.rs`. An
+//!   exercise that no probe covers yet is still judged by its tests, which
+//!   a student can forge: every exercise of chapters 1 to 3 is probed;
 //! * the CPU: nothing but the time limits bounds a student's CPU time, and
 //!   students graded side by side share the cores (a slow neighbour costs
 //!   time, never points, since no verdict depends on speed);
