@@ -61,14 +61,8 @@ pub fn chapter(
         }
         return verdicts;
     }
-    let features = [probe::feature(chapter)];
-    let built = probe::build(place, &features, &settings.build, settings.cargo_jobs);
-    let failed = match built {
-        Ok(ran) if ran.success => None,
-        Ok(ran) => Some(first_error(&ran.text)),
-        Err(e) => Some(e),
-    };
-    if let Some(error) = failed {
+    let built = (run.probe_built.clone()).unwrap_or_else(|| build_probe(place, chapter, settings));
+    if let Err(error) = built {
         for v in &mut probed {
             v.message = Some(format!("the probe of its chapter does not build: {error}"));
         }
@@ -89,6 +83,21 @@ pub fn chapter(
         .map_or(&[][..], Vec::as_slice);
     pictures(ours, scenes.map(|p| p.scenes), &mut verdicts, earlier);
     verdicts
+}
+
+/// Builds the grader's probe of `chapter` in `place` (`student.rs` does
+/// it before the student's tests run); the first error if it fails.
+pub fn build_probe(
+    place: &Place,
+    chapter: &ChapterEntry,
+    settings: &Settings,
+) -> Result<(), String> {
+    let features = [probe::feature(chapter)];
+    match probe::build(place, &features, &settings.build, settings.cargo_jobs) {
+        Ok(ran) if ran.success => Ok(()),
+        Ok(ran) => Err(first_error(&ran.text)),
+        Err(e) => Err(e),
+    }
 }
 
 /// A verdict judged by values (not passed yet), or by the tests if the

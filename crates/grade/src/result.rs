@@ -54,6 +54,12 @@ pub struct ChapterRun {
     /// Seconds to build, and to run the tests.
     pub build_seconds: f64,
     pub test_seconds: f64,
+    /// Did the grader's probe of the chapter build, before any of the
+    /// student's code ran? None if the chapter has no probe or its tests
+    /// did not compile (not kept: it only passes from the run to the
+    /// judging).
+    #[serde(skip)]
+    pub probe_built: Option<Result<(), String>>,
 }
 
 /// A picture that differs from its reference.

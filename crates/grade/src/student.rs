@@ -78,7 +78,9 @@ fn grade_in(
     let _ = std::fs::remove_dir_all(pictures);
     result.seed = reference.expected.seed;
     for chapter in &settings.chapters {
-        let (mut chapter_run, found) = run_chapter(&place, chapter, settings)?;
+        let probed =
+            (reference.exercises_of(&chapter.folder)).any(|e| reference.expected.probes(&e.id));
+        let (mut chapter_run, found) = run_chapter(&place, chapter, settings, probed)?;
         let from_tests = (reference.exercises_of(&chapter.folder))
             .map(|exercise| judge(exercise, &chapter_run, &found))
             .collect();
@@ -167,6 +169,7 @@ fn run_chapter(
     place: &Place,
     chapter: &ChapterEntry,
     settings: &Settings,
+    probed: bool,
 ) -> Result<(ChapterRun, Found), String> {
     let package = chapter.package();
     let mut done = ChapterRun {
@@ -184,6 +187,12 @@ fn run_chapter(
         return Ok((done, Found(Outcomes::new(), TestOutput::default())));
     }
     done.compiled = true;
+    if probed {
+        // Before any of the student's code runs: what decides the points is
+        // built from the sources alone, whatever the tests then do to the
+        // files of their own target folder.
+        done.probe_built = Some(super::judge::build_probe(place, chapter, settings));
+    }
     let tested = run(
         cargo_test(place, &package, false, settings.cargo_jobs),
         &settings.test,
