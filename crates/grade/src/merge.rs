@@ -58,7 +58,10 @@ pub fn main(args: &GradeArgs, root: &Path, out: &Path) -> Result<(), String> {
         points: &points,
         students: &students,
     };
-    let written = report::write_all(out, &class)?;
+    let mut written = report::write_all(out, &class)?;
+    // The teacher keeps the seed with the outputs, as one run does.
+    let seed = format!("{}\n", first.seed);
+    written.push(report::write(&out.join("seed.txt"), seed)?);
     report::print_table(&class);
     let (count, of) = (slices.len(), students.len());
     println!("\nmerged {count} slices: {of} students");

@@ -14,6 +14,7 @@ fn graded_with() -> GradedWith {
         reference: "0.1.0 @ abc".to_owned(),
         reference_hash: "h".to_owned(),
         settings: "Settings { chapters: [01-rays], seed: 7 }".to_owned(),
+        seed: 7,
         tests: Tests::default(),
         class: CLASS.map(String::from).to_vec(),
     }

@@ -115,6 +115,10 @@ pub struct GradedWith {
     /// chapters, the limits, anything added to the settings, such as the
     /// seed of what is judged), but not how many run side by side.
     pub settings: String,
+    /// The seed the exercises' inputs and scenes were drawn from (also in
+    /// `settings`; here for the merge, which keeps it in `seed.txt` as a
+    /// run over the whole class does).
+    pub seed: u64,
     /// The tests of the chapters graded and of each exercise.
     pub tests: Tests,
     /// Every student folder of the class, as listed (hidden ones aside).
@@ -138,6 +142,7 @@ pub fn graded_with(reference: &Reference, settings: &Settings, class: Vec<String
         reference: reference.record.label(),
         reference_hash: reference.hash.clone(),
         settings: settings_key(settings),
+        seed: settings.seed,
         tests: reference.tests.clone(),
         class,
     }
