@@ -34,7 +34,7 @@ fn head_on_rays_go_straight_through_and_never_give_nan() {
         for eta in [1.0 / 1.5, 1.5] {
             let d = -n;
             let got = refract(d, n, eta);
-            if !got.is_some_and(|out| out.is_finite() && (out - d).length() < 1e-4) {
+            if !got.is_some_and(|out| out.is_finite() && (out - d).length() < 1e-3) {
                 wrong.push((d, n, eta, got, -n.dot(d)));
             }
         }
