@@ -31,12 +31,11 @@
 mod grade_support;
 
 use std::collections::BTreeMap;
-use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-use grade_support::{handout, read_csv, snapshot_reference};
+use grade_support::{handout, read_csv, run_grade as grade, snapshot_reference};
 
 #[test]
 fn a_class_graded_in_slices_and_merged_gets_the_outputs_of_one_run() {
@@ -154,22 +153,6 @@ fn make_class(reference: &Path, class: &Path) {
     std::fs::write(&lib, source + "\npub fn broken() -> u32 {\n    \"no\"\n}\n").unwrap();
     std::fs::create_dir(class.join("empty")).unwrap();
     std::fs::write(class.join("notes.txt"), "grade them kindly\n").unwrap();
-}
-
-/// `grade ARGS`: what it printed (stdout, then stderr). Panics if it
-/// fails.
-fn grade(args: &[&OsStr]) -> String {
-    let run = Command::new(env!("CARGO_BIN_EXE_grade"))
-        .args(args)
-        .output()
-        .unwrap();
-    let text = format!(
-        "{}{}",
-        String::from_utf8_lossy(&run.stdout),
-        String::from_utf8_lossy(&run.stderr)
-    );
-    assert!(run.status.success(), "grade {args:?} failed:\n{text}");
-    text
 }
 
 /// Which slice holds each student, from the slices' files.

@@ -29,7 +29,6 @@ use std::collections::BTreeMap;
 use std::os::unix::fs::MetadataExt;
 use std::os::unix::net::UnixListener;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::sync::{Arc, Mutex, OnceLock};
 use std::time::Instant;
 
@@ -67,23 +66,10 @@ fn graded() -> Option<&'static Graded> {
 
 /// `grade CLASS --chapters 1` with this test's reference and output.
 fn grade(reference: &Path, out: &Path, class: &Path) -> String {
-    let run = Command::new(env!("CARGO_BIN_EXE_grade"))
-        .arg(class)
-        .arg("--reference")
-        .arg(reference)
-        .arg("--out")
-        .arg(out)
-        .args(["--chapters", "1", "--memory", "3072", "--disk", "1024"])
-        .args(["--timeout", "180"])
-        .output()
-        .unwrap();
-    let text = format!(
-        "{}{}",
-        String::from_utf8_lossy(&run.stdout),
-        String::from_utf8_lossy(&run.stderr)
-    );
-    assert!(run.status.success(), "grade failed:\n{text}");
-    text
+    let limits = ["--memory", "3072", "--disk", "1024", "--timeout", "180"];
+    let mut args = vec![class.as_os_str()];
+    args.extend(limits.iter().map(std::ffi::OsStr::new));
+    grade_support::grade_chapters(reference, out, &args, "1")
 }
 
 fn grade_the_class() -> Graded {

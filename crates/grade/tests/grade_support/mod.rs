@@ -39,13 +39,18 @@ pub fn grade(reference: &Path, out: &Path, args: &[&OsStr]) -> String {
 
 /// [`grade`] of the `chapters` given.
 pub fn grade_chapters(reference: &Path, out: &Path, args: &[&OsStr], chapters: &str) -> String {
+    let mut all = args.to_vec();
+    all.extend(["--reference".as_ref(), reference.as_os_str()]);
+    all.extend(["--out".as_ref(), out.as_os_str(), "--chapters".as_ref()]);
+    all.push(chapters.as_ref());
+    run_grade(&all)
+}
+
+/// The `grade` binary with `args`: what it printed (stdout, then stderr).
+/// Panics if it fails.
+pub fn run_grade(args: &[&OsStr]) -> String {
     let run = Command::new(env!("CARGO_BIN_EXE_grade"))
         .args(args)
-        .arg("--reference")
-        .arg(reference)
-        .arg("--out")
-        .arg(out)
-        .args(["--chapters", chapters])
         .output()
         .unwrap();
     let text = format!(
@@ -53,7 +58,7 @@ pub fn grade_chapters(reference: &Path, out: &Path, args: &[&OsStr], chapters: &
         String::from_utf8_lossy(&run.stdout),
         String::from_utf8_lossy(&run.stderr)
     );
-    assert!(run.status.success(), "grade failed:\n{text}");
+    assert!(run.status.success(), "grade {args:?} failed:\n{text}");
     text
 }
 
