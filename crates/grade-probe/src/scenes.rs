@@ -29,6 +29,14 @@ pub fn chapters() -> Vec<&'static str> {
     all.push("02-hits");
     #[cfg(feature = "ch03")]
     all.push("03-lambert");
+    #[cfg(feature = "ch04")]
+    all.push("04-shadows");
+    #[cfg(feature = "ch05")]
+    all.push("05-reflection");
+    #[cfg(feature = "ch06")]
+    all.push("06-refraction");
+    #[cfg(feature = "ch07")]
+    all.push("07-termination");
     all
 }
 
@@ -75,6 +83,29 @@ const CH02: [&str; 5] = [
     "ch02-nearest",
     "ch02-triangle",
 ];
+const CH03: [&str; 3] = ["ch03-lambert", "ch03-light-loop", "ch03-spot"];
+const CH04: [&str; 4] = [
+    "ch04-shadow-ray",
+    "ch04-any-hit",
+    "ch04-light-is-free",
+    "ch04-offset",
+];
+const CH05: [&str; 5] = [
+    "ch05-trace",
+    "ch05-recursion",
+    "ch05-reflect",
+    "ch05-mirror-ray",
+    "ch05-highlight",
+];
+const CH06: [&str; 3] = ["ch06-refract", "ch06-schlick", "ch06-split"];
+const CH07: [&str; 2] = ["ch07-below-threshold", "ch07-may-trace"];
+
+/// The exercises of the chapters up to chapter `number`: what a scene of
+/// that chapter draws with.
+fn up_to(number: usize) -> Vec<&'static str> {
+    let all: [&[&'static str]; 7] = [&CH01, &CH02, &CH03, &CH04, &CH05, &CH06, &CH07];
+    all[..number].concat()
+}
 
 /// The `i`th scene of `chapter`: its name's tail, the exercises that draw
 /// it, its picture.
@@ -84,7 +115,7 @@ fn draw(chapter: &str, i: usize, rng: &mut Rng) -> Option<(String, Vec<&'static 
     match chapter {
         "01-rays" => {
             let scene = parse(&format!("{camera}{}", image(rng)));
-            let uses = CH01[1..].to_vec();
+            let uses = up_to(1)[1..].to_vec();
             Some((String::new(), uses, ch01_rays::render_sky(&scene, || {}).0))
         }
         #[cfg(feature = "ch02")]
@@ -92,7 +123,7 @@ fn draw(chapter: &str, i: usize, rng: &mut Rng) -> Option<(String, Vec<&'static 
             use ch02_hits::{Method, View};
             let scene = parse(&format!("{camera}{}{}", image(rng), objects(rng)));
             let (view, name) = [(View::Flat, "flat"), (View::Normals, "normals")][i % 2];
-            let uses = [CH01.as_slice(), &CH02].concat();
+            let uses = up_to(2);
             let picture = ch02_hits::render_hits(&scene, view, Method::Lecture, || {}).0;
             Some((format!(" ({name})"), uses, picture))
         }
@@ -100,13 +131,37 @@ fn draw(chapter: &str, i: usize, rng: &mut Rng) -> Option<(String, Vec<&'static 
         "03-lambert" => {
             let text = format!("{camera}{}{}{}", image(rng), objects(rng), lights(rng));
             let scene = parse(&text);
-            let ch03 = ["ch03-lambert", "ch03-light-loop", "ch03-spot"];
-            let uses = [CH01.as_slice(), &CH02, &ch03].concat();
             Some((
                 String::new(),
-                uses,
+                up_to(3),
                 ch03_lambert::render_lambert(&scene, || {}).0,
             ))
+        }
+        #[cfg(feature = "ch04")]
+        "04-shadows" => {
+            let scene = parse(&lit_scene(rng, &camera, 4));
+            let start = ch04_shadows::ShadowStart::Offset;
+            let picture = ch04_shadows::render_shadows(&scene, start, || {}).0;
+            Some((String::new(), up_to(4), picture))
+        }
+        #[cfg(feature = "ch05")]
+        "05-reflection" => {
+            let scene = parse(&lit_scene(rng, &camera, 5));
+            let picture = ch05_reflection::render_mirrors(&scene, || {}).0;
+            Some((String::new(), up_to(5), picture))
+        }
+        #[cfg(feature = "ch06")]
+        "06-refraction" => {
+            let scene = parse(&lit_scene(rng, &camera, 6));
+            let picture = ch06_refraction::render_glass(&scene, || {}).0;
+            Some((String::new(), up_to(6), picture))
+        }
+        #[cfg(feature = "ch07")]
+        "07-termination" => {
+            let scene = parse(&lit_scene(rng, &camera, 7));
+            let criteria = ch07_termination::Termination::of(&scene);
+            let picture = ch07_termination::render_terminated(&scene, criteria, || {}).0;
+            Some((String::new(), up_to(7), picture))
         }
         _ => None,
     }
@@ -165,22 +220,33 @@ fn objects(rng: &mut Rng) -> String {
         );
         text += &format!("[materials.m{m}]\ncolor = {}\n", vector(color));
     }
-    let object = |kind: &str, fields: String, m: u32| {
-        format!("[[objects]]\ntype = \"{kind}\"\n{fields}material = \"m{m}\"\n")
+    text + &shapes(rng, false)
+}
+
+/// A plane, a few spheres and triangles near the origin, of the materials
+/// m0 to m2; with `shadowless`, one in five casts no shadow.
+#[allow(dead_code)]
+fn shapes(rng: &mut Rng, shadowless: bool) -> String {
+    let mut text = String::new();
+    let mut object = |rng: &mut Rng, kind: &str, fields: String| {
+        let m = whole(rng, 0, 2);
+        let shadows = match shadowless && chance(rng, 0.2) {
+            true => "shadows = false\n",
+            false => "",
+        };
+        text += &format!("[[objects]]\ntype = \"{kind}\"\n{fields}material = \"m{m}\"\n{shadows}");
     };
-    text += &object(
-        "plane",
-        format!(
-            "normal = {}\noffset = {:?}\n",
-            vector((Vec3::Y + 0.3 * unit(rng)).normalize()),
-            number(rng, 2.0, 3.0)
-        ),
-        whole(rng, 0, 2),
+    let normal = (Vec3::Y + 0.3 * unit(rng)).normalize();
+    let fields = format!(
+        "normal = {}\noffset = {:?}\n",
+        vector(normal),
+        number(rng, 2.0, 3.0)
     );
+    object(rng, "plane", fields);
     for _ in 0..whole(rng, 2, 4) {
         let (center, radius) = (point(rng, 1.5), number(rng, 0.4, 1.2));
         let fields = format!("center = {}\nradius = {radius:?}\n", vector(center));
-        text += &object("sphere", fields, whole(rng, 0, 2));
+        object(rng, "sphere", fields);
     }
     for _ in 0..whole(rng, 1, 3) {
         let p0 = point(rng, 2.0);
@@ -194,7 +260,7 @@ fn objects(rng: &mut Rng) -> String {
             vector(p1),
             vector(p2)
         );
-        text += &object("triangle", fields, whole(rng, 0, 2));
+        object(rng, "triangle", fields);
     }
     text
 }
@@ -219,4 +285,56 @@ fn lights(rng: &mut Rng) -> String {
         number(rng, 20.0, 50.0),
         inner + number(rng, 1.0, 15.0),
     )
+}
+
+/// A scene of chapter `number` (4 to 7): chapter 3's objects and lights,
+/// then what the chapter adds. Chapter 4: objects and lights that cast no
+/// shadow. Chapter 5: mirrors, and shiny materials. Chapter 6: a glass.
+/// Chapter 7: a weight threshold high enough to end paths.
+#[allow(dead_code)]
+fn lit_scene(rng: &mut Rng, camera: &str, chapter: u32) -> String {
+    let mut text = format!("{camera}{}", image(rng));
+    let max_depth = whole(rng, 2, 5);
+    let min_weight = match chapter {
+        7 => number(rng, 0.05, 0.3),
+        _ => 0.0,
+    };
+    text += &format!("[trace]\nmax_depth = {max_depth}\nmin_weight = {min_weight:?}\n");
+    for m in 0..3 {
+        let color = Vec3::new(
+            number(rng, 0.1, 1.0),
+            number(rng, 0.1, 1.0),
+            number(rng, 0.1, 1.0),
+        );
+        text += &format!("[materials.m{m}]\ncolor = {}\n", vector(color));
+        if chapter >= 5 && m > 0 {
+            let reflectance = number(rng, 0.1, 0.8);
+            text += &format!(
+                "reflectance = [{reflectance:?}, {reflectance:?}, {reflectance:?}]\n\
+                 specular = {:?}\nshininess = {:?}\n",
+                number(rng, 0.1, 0.9),
+                number(rng, 5.0, 120.0)
+            );
+        }
+        if chapter >= 6 && m == 2 {
+            text += &format!(
+                "transparency = {:?}\nior = {:?}\nfresnel = {}\n",
+                number(rng, 0.5, 0.95),
+                number(rng, 1.2, 2.0),
+                chance(rng, 0.7)
+            );
+        }
+    }
+    text += &shapes(rng, true);
+    text += &lights(rng);
+    if chance(rng, 0.5) {
+        // A second point light that casts no shadow.
+        let at = above(unit(rng)) * number(rng, 4.0, 7.0);
+        text += &format!(
+            "[[lights]]\ntype = \"point\"\nposition = {}\nintensity = {:?}\nshadows = false\n",
+            vector(at),
+            number(rng, 5.0, 20.0)
+        );
+    }
+    text
 }

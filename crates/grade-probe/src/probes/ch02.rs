@@ -28,7 +28,7 @@ pub fn probes() -> Vec<Probe> {
 }
 
 /// A ray from anywhere in a box, towards `target` if given.
-fn ray(rng: &mut Rng, target: Option<Vec3>) -> Ray {
+pub(super) fn ray(rng: &mut Rng, target: Option<Vec3>) -> Ray {
     let origin = point(rng, 8.0);
     let direction = match target {
         Some(target) if (target - origin).length() > 1e-3 => (target - origin).normalize(),
@@ -39,7 +39,7 @@ fn ray(rng: &mut Rng, target: Option<Vec3>) -> Ray {
 
 /// A range (t_min, t_max): from 0 or a small positive number, to a finite
 /// bound or infinity.
-fn range(rng: &mut Rng) -> (f32, f32) {
+pub(super) fn range(rng: &mut Rng) -> (f32, f32) {
     let t_min = if chance(rng, 0.5) {
         0.0
     } else {
@@ -53,7 +53,7 @@ fn range(rng: &mut Rng) -> (f32, f32) {
     (t_min, t_max)
 }
 
-fn show_ray(ray: &Ray) -> String {
+pub(super) fn show_ray(ray: &Ray) -> String {
     format!("ray {} → {}", show(ray.origin), show(ray.direction))
 }
 
@@ -204,7 +204,7 @@ fn closest(rng: &mut Rng) -> Option<Case> {
 }
 
 /// A sphere, plane or triangle near the origin.
-fn shape(rng: &mut Rng) -> Shape {
+pub(super) fn shape(rng: &mut Rng) -> Shape {
     match whole(rng, 0, 2) {
         0 => Shape::Sphere {
             center: point(rng, 4.0),

@@ -25,7 +25,7 @@ pub fn probes() -> Vec<Probe> {
 }
 
 /// A colour with channels in [lo, hi).
-fn color(rng: &mut Rng, lo: f32, hi: f32) -> Color {
+pub(super) fn color(rng: &mut Rng, lo: f32, hi: f32) -> Color {
     Color::new(
         number(rng, lo, hi),
         number(rng, lo, hi),
@@ -33,7 +33,7 @@ fn color(rng: &mut Rng, lo: f32, hi: f32) -> Color {
     )
 }
 
-fn material(rng: &mut Rng) -> Material {
+pub(super) fn material(rng: &mut Rng) -> Material {
     Material {
         name: "probe".into(),
         color: color(rng, 0.0, 1.0),

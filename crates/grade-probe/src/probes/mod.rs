@@ -11,6 +11,14 @@ mod ch01;
 mod ch02;
 #[cfg(feature = "ch03")]
 mod ch03;
+#[cfg(feature = "ch04")]
+mod ch04;
+#[cfg(feature = "ch05")]
+mod ch05;
+#[cfg(feature = "ch06")]
+mod ch06;
+#[cfg(feature = "ch07")]
+mod ch07;
 
 /// How many inputs each exercise is probed on.
 pub const CASES: usize = 24;
@@ -38,6 +46,14 @@ pub fn all() -> Vec<Probe> {
     all.extend(ch02::probes());
     #[cfg(feature = "ch03")]
     all.extend(ch03::probes());
+    #[cfg(feature = "ch04")]
+    all.extend(ch04::probes());
+    #[cfg(feature = "ch05")]
+    all.extend(ch05::probes());
+    #[cfg(feature = "ch06")]
+    all.extend(ch06::probes());
+    #[cfg(feature = "ch07")]
+    all.extend(ch07::probes());
     all
 }
 

@@ -1,0 +1,225 @@
+//! The probe judges as the tests do: every classic mistake of the
+//! chapters' `mistakes.toml` loses its exercise's points, and every
+//! lecture's own method (`[[lecture]]`) keeps them. A probe that misses a
+//! mistake gives points for wrong code, whatever the tests say.
+//!
+//! Each mistake is written into a copy of the workspace (the workbook's
+//! `handout --check-mistakes` machinery), the probe of its chapter built
+//! there, and run on two seeds: the mistake is caught if its exercise's
+//! values disagree with the reference's, or, failing that, if one of its
+//! chapter's seeded scenes differs (`judge.rs` then takes the points of the
+//! chapter's exercises that draw it). It builds once per mistake: about
+//! half an hour for all of them on two cores, so it is opt-in:
+//!
+//! ```text
+//! RAYBOOK_PROBE_MISTAKES=1 cargo test -p grade --test probe_mistakes -- --nocapture
+//! RAYBOOK_PROBE_MISTAKES=ch05 ...   only the exercises whose id starts so
+//! ```
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use grade_probe::{Picture, Probed, first_disagreement};
+use workbench::chapters::{self, ChapterEntry};
+use workbench::compare::{Tolerance, Verdict, compare};
+use workbook::handout::check::{Check, mistakes_files};
+
+const SEEDS: [u64; 2] = [1, 20261205];
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// The probe's feature for a chapter, as the grader builds it.
+fn feature(chapter: &ChapterEntry) -> String {
+    format!("ch{:02}", chapter.number())
+}
+
+/// Builds the probe of the current variant with `feature`; the first error
+/// line if it does not build.
+fn build(check: &Check, feature: &str) -> Result<(), String> {
+    let args = [
+        "build",
+        "--offline",
+        "-p",
+        "grade-probe",
+        "--no-default-features",
+        "--features",
+        feature,
+    ];
+    let (ok, text) = check.cargo(&args)?;
+    match ok {
+        true => Ok(()),
+        false => Err((text.lines())
+            .find(|l| l.starts_with("error"))
+            .unwrap_or("the build failed")
+            .to_owned()),
+    }
+}
+
+/// Runs the built probe with `args` and `seed`; what it wrote.
+fn run(binary: &Path, args: [&str; 2], seed: u64) -> Result<Probed, String> {
+    let out = tempfile::NamedTempFile::new().map_err(|e| e.to_string())?;
+    let ran = Command::new(binary)
+        .args(args)
+        .args(["--seed", &seed.to_string(), "--out"])
+        .arg(out.path())
+        .output()
+        .map_err(|e| e.to_string())?;
+    if !ran.status.success() {
+        let text = String::from_utf8_lossy(&ran.stderr);
+        let line = text
+            .lines()
+            .find(|l| l.contains("panicked") || l.contains("grade-probe"));
+        return Err(format!("crashed: {}", line.unwrap_or("")));
+    }
+    let bytes = std::fs::read(out.path()).map_err(|e| e.to_string())?;
+    serde_json::from_slice(&bytes).map_err(|e| e.to_string())
+}
+
+/// What one seed's probe gave: each probed exercise's values and each
+/// chapter's scenes.
+#[derive(Default)]
+struct Outputs {
+    values: Vec<(String, grade_probe::Values)>,
+    scenes: Vec<(String, Vec<Picture>)>,
+}
+
+/// The probe's outputs for `ids` and `folders` under `seed`.
+fn outputs(binary: &Path, ids: &[&str], folders: &[&str], seed: u64) -> Outputs {
+    let mut found = Outputs::default();
+    for id in ids {
+        if let Ok(mut p) = run(binary, ["--exercise", id], seed)
+            && let Some(values) = p.exercises.pop()
+        {
+            found.values.push((id.to_string(), values));
+        }
+    }
+    for folder in folders {
+        if let Ok(p) = run(binary, ["--scenes", folder], seed) {
+            found.scenes.push((folder.to_string(), p.scenes));
+        }
+    }
+    found
+}
+
+/// Do two sets of seeded scenes agree within the snapshots' tolerance?
+fn same_pictures(ours: &[Picture], theirs: &[Picture]) -> bool {
+    let image = |p: &Picture| image::RgbImage::from_raw(p.width, p.height, p.rgb.clone());
+    ours.len() == theirs.len()
+        && ours.iter().zip(theirs).all(|(a, b)| {
+            let tolerance = Tolerance::for_size(a.width, a.height);
+            match (image(a), image(b)) {
+                (Some(a), Some(b)) => matches!(compare(&a, &b, tolerance), Verdict::Pass(_)),
+                _ => false,
+            }
+        })
+}
+
+/// How the probe judged a variant of exercise `id` against `reference`.
+fn judged(reference: &[Outputs], found: &[Outputs], id: &str, folder: &str) -> &'static str {
+    let values = |o: &Outputs| {
+        o.values
+            .iter()
+            .find(|(i, _)| i == id)
+            .map(|(_, v)| v.clone())
+    };
+    let scenes = |o: &Outputs| {
+        o.scenes
+            .iter()
+            .find(|(f, _)| f == folder)
+            .map(|(_, s)| s.clone())
+    };
+    let mut verdict = "agrees";
+    for (ours, theirs) in reference.iter().zip(found) {
+        match (values(ours), values(theirs)) {
+            (Some(a), Some(b)) if first_disagreement(&a, &b).is_none() => {}
+            _ => return "values",
+        }
+        if scenes(ours)
+            .zip(scenes(theirs))
+            .is_none_or(|(a, b)| !same_pictures(&a, &b))
+        {
+            verdict = "scenes";
+        }
+    }
+    verdict
+}
+
+#[test]
+fn every_classic_mistake_loses_its_points_and_every_lecture_method_keeps_them() {
+    let Ok(only) = std::env::var("RAYBOOK_PROBE_MISTAKES") else {
+        eprintln!("skipped: RAYBOOK_PROBE_MISTAKES=1 (or an id prefix) runs it (half an hour)");
+        return;
+    };
+    let only = if only == "1" { String::new() } else { only };
+    let root = root();
+    let check = Check::new(&root).expect("the check's work folder");
+    let binary = root.join("target/handout-check/target/debug/grade-probe");
+    let last = chapters::all().iter().rfind(|c| c.exercises).unwrap();
+    check.write_variant(|_| None).unwrap();
+    build(&check, &feature(last)).expect("the reference's probe builds");
+    let list = Command::new(&binary).arg("--list").output().unwrap();
+    let list: serde_json::Value = serde_json::from_slice(&list.stdout).unwrap();
+    let probed = |id: &str| {
+        let exercises = list["exercises"].as_object().unwrap().values();
+        exercises
+            .flat_map(|l| l.as_array().unwrap())
+            .any(|x| x == id)
+    };
+    let files = mistakes_files(&root).unwrap();
+    let ids: Vec<String> = (files.iter())
+        .flat_map(|(_, f)| f.mistake.iter().map(|m| m.exercise.clone()))
+        .filter(|id| id.starts_with(&only) && probed(id))
+        .collect();
+    let ids: Vec<&str> = ids.iter().map(String::as_str).collect();
+    let folders: Vec<&str> = (files.iter()).map(|(c, _)| c.folder.as_str()).collect();
+    let reference: Vec<Outputs> = (SEEDS.iter())
+        .map(|&s| outputs(&binary, &ids, &folders, s))
+        .collect();
+
+    let mut wrong = Vec::new();
+    let mut count = 0;
+    for (chapter, file) in &files {
+        let variants = (file.mistake.iter())
+            .map(|m| (&m.exercise, &m.body, true, m.what.as_str()))
+            .chain(
+                file.lecture
+                    .iter()
+                    .map(|l| (&l.exercise, &l.body, false, "the lecture's method")),
+            );
+        for (id, body, is_mistake, what) in variants {
+            if !id.starts_with(&only) || !probed(id) {
+                continue;
+            }
+            count += 1;
+            check
+                .write_variant(|r| (r.id == *id).then(|| body.clone()))
+                .unwrap();
+            let verdict = match build(&check, &feature(chapter)) {
+                Err(e) => format!("does not compile ({e})"),
+                Ok(()) => {
+                    let found: Vec<Outputs> = (SEEDS.iter())
+                        .map(|&s| outputs(&binary, &[id.as_str()], &[chapter.folder.as_str()], s))
+                        .collect();
+                    judged(&reference, &found, id, &chapter.folder).to_owned()
+                }
+            };
+            let right = match is_mistake {
+                true => verdict != "agrees",
+                false => verdict == "agrees",
+            };
+            let mark = if right { "" } else { "   <-- WRONG" };
+            println!("{id:<22} {what:<60} {verdict}{mark}");
+            if !right {
+                wrong.push(format!("{id}: {what}: {verdict}"));
+            }
+        }
+    }
+    println!(
+        "{} of {count} judged as they should be",
+        count - wrong.len()
+    );
+    assert!(count > 0, "no mistake of {only:?} is probed");
+    assert!(wrong.is_empty(), "judged wrongly: {wrong:#?}");
+}
