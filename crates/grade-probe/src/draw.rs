@@ -56,9 +56,42 @@ pub fn whole(rng: &mut Rng, lo: u32, hi: u32) -> u32 {
     rng.random_range(lo..=hi)
 }
 
-/// A vector as JSON.
+/// An exact number for an edge case: k/64 for an odd k, |k/64| ≤ r. It
+/// is a float exactly, and so are the sums and products of the few such
+/// numbers that the exercises' formulas take: at an input built of them,
+/// every correct formula computes the same value, and an edge (a root
+/// exactly at t_max, a point exactly on a triangle's edge, a light exactly
+/// in the surface's plane) is decided by the exercise's rule, not by
+/// rounding. It has six decimals, so it is never a short decimal either.
+pub fn exact(rng: &mut Rng, r: f32) -> f32 {
+    let most = (32.0 * r) as i32;
+    (2 * rng.random_range(-most..most) + 1) as f32 / 64.0
+}
+
+/// A point of exact coordinates in the cube [−r, r]³.
+pub fn exact_point(rng: &mut Rng, r: f32) -> Vec3 {
+    Vec3::new(exact(rng, r), exact(rng, r), exact(rng, r))
+}
+
+/// One of the six axis directions ±x, ±y, ±z.
+pub fn axis(rng: &mut Rng) -> Vec3 {
+    let v = [Vec3::X, Vec3::Y, Vec3::Z][whole(rng, 0, 2) as usize];
+    if chance(rng, 0.5) { -v } else { v }
+}
+
+/// A number as JSON. JSON has no infinity or NaN (serde writes them as
+/// `null`, which is `None`'s value): they are written as text, so that a
+/// hit at t = ∞ never agrees with no hit.
+pub fn num(x: f32) -> Value {
+    match x.is_finite() {
+        true => json!(x),
+        false => json!(x.to_string()),
+    }
+}
+
+/// A vector as JSON (see [`num`]).
 pub fn v3(v: Vec3) -> Value {
-    json!([v.x, v.y, v.z])
+    json!([num(v.x), num(v.y), num(v.z)])
 }
 
 /// A vector as the report shows an input: exact (Rust's shortest form).

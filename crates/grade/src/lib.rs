@@ -61,7 +61,8 @@
 //!   code computed on inputs it never saw, judged outside the sandbox
 //!   (`judge.rs`); the pictures leave only through `outbound.rs`. An
 //!   exercise that no probe covers yet is still judged by its tests, which
-//!   a student can forge: every exercise of chapters 1 to 3 is probed;
+//!   a student can forge: every exercise of chapters 1 to 7 is probed, so
+//!   none is left, but a new exercise is until its probe is written;
 //! * the CPU: nothing but the time limits bounds a student's CPU time, and
 //!   students graded side by side share the cores (a slow neighbour costs
 //!   time, never points, since no verdict depends on speed);

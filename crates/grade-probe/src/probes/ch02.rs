@@ -3,7 +3,9 @@
 
 use super::Probe;
 use crate::Case;
-use crate::draw::{Rng, chance, number, point, show, unit, v3, whole};
+use crate::draw::{
+    Rng, axis, chance, exact, exact_point, num, number, point, show, unit, v3, whole,
+};
 use ch02_hits::toolkit::Vec3;
 use ch02_hits::toolkit::scene::{Object, Shape};
 use ch02_hits::{Hit, Ray};
@@ -63,7 +65,72 @@ fn near_ends(t: f32, (t_min, t_max): (f32, f32), margin: f32) -> bool {
     (t - t_min).abs() < margin || (t - t_max).abs() < margin
 }
 
+/// A unit direction with no part along the unit axis `axis` (exactly).
+fn across(rng: &mut Rng, axis: Vec3) -> Vec3 {
+    let v = unit(rng) * (Vec3::ONE - axis.abs());
+    match v.length() < 0.1 {
+        true => across(rng, axis),
+        false => v.normalize(),
+    }
+}
+
+fn plane_case(normal: Vec3, offset: f32, ray: &Ray, range: (f32, f32)) -> Case {
+    let hit = ch02_hits::intersect_plane(normal, offset, ray, range.0, range.1);
+    Case {
+        input: format!(
+            "plane n {}, d {offset:?}; {}; t in ({:?}, {:?})",
+            show(normal),
+            show_ray(ray),
+            range.0,
+            range.1
+        ),
+        value: hit.map_or(Value::Null, num),
+    }
+}
+
+/// The plane's edge cases, in exact numbers (`draw::exact`), on a plane
+/// whose normal is an axis: a ray that starts on the plane (t = 0 is not
+/// in a range from 0: the bounds are strict); a ray parallel to it (no hit,
+/// never one at infinity); a hit exactly at t_min or at t_max (outside).
+fn plane_edge(rng: &mut Rng) -> Case {
+    let normal = axis(rng);
+    let origin = exact_point(rng, 4.0);
+    match whole(rng, 0, 2) {
+        0 => {
+            let ray = Ray {
+                origin,
+                direction: unit(rng),
+            };
+            plane_case(normal, -normal.dot(origin), &ray, (0.0, f32::INFINITY))
+        }
+        1 => {
+            let ray = Ray {
+                origin,
+                direction: across(rng, normal),
+            };
+            let offset = exact(rng, 4.0);
+            plane_case(normal, offset, &ray, (0.0, f32::INFINITY))
+        }
+        _ => {
+            let distance = exact(rng, 4.0).abs();
+            let offset = -normal.dot(origin) - distance;
+            let ray = Ray {
+                origin,
+                direction: normal,
+            };
+            let range = match chance(rng, 0.5) {
+                true => (0.0, distance),
+                false => (distance, f32::INFINITY),
+            };
+            plane_case(normal, offset, &ray, range)
+        }
+    }
+}
+
 fn plane(rng: &mut Rng) -> Option<Case> {
+    if chance(rng, 0.3) {
+        return Some(plane_edge(rng));
+    }
     let (normal, offset) = (unit(rng), number(rng, -5.0, 5.0));
     let ray = ray(rng, None);
     let range = range(rng);
@@ -72,20 +139,40 @@ fn plane(rng: &mut Rng) -> Option<Case> {
     if cos.abs() < 0.05 || near_ends(t, range, 1e-2) {
         return None;
     }
-    let hit = ch02_hits::intersect_plane(normal, offset, &ray, range.0, range.1);
-    Some(Case {
-        input: format!(
-            "plane n {}, d {offset:?}; {}; t in ({:?}, {:?})",
-            show(normal),
-            show_ray(&ray),
-            range.0,
-            range.1
-        ),
-        value: json!(hit),
-    })
+    Some(plane_case(normal, offset, &ray, range))
+}
+
+fn sphere_case(center: Vec3, radius: f32, ray: &Ray) -> Case {
+    let roots = ch02_hits::sphere_roots_abc(center, radius, ray);
+    Case {
+        input: format!("sphere m {}, ρ {radius:?}; {}", show(center), show_ray(ray)),
+        value: roots.map_or(Value::Null, |(a, b)| json!([num(a), num(b)])),
+    }
+}
+
+/// Tangency in exact numbers: a ray along an axis that grazes the sphere
+/// (discriminant exactly 0: one double root, a hit), or passes it by 1/64
+/// outside (no roots).
+fn sphere_edge(rng: &mut Rng) -> Case {
+    let center = exact_point(rng, 4.0);
+    let radius = exact(rng, 2.0).abs();
+    let direction = axis(rng);
+    let side = loop {
+        let side = axis(rng);
+        if side.dot(direction) == 0.0 {
+            break side;
+        }
+    };
+    let past = if chance(rng, 0.7) { 0.0 } else { 1.0 / 64.0 };
+    let along = exact(rng, 6.0);
+    let origin = center + (radius + past) * side + along * direction;
+    sphere_case(center, radius, &Ray { origin, direction })
 }
 
 fn sphere(rng: &mut Rng) -> Option<Case> {
+    if chance(rng, 0.2) {
+        return Some(sphere_edge(rng));
+    }
     let (center, radius) = (point(rng, 5.0), number(rng, 0.2, 3.0));
     let aim = center + unit(rng) * number(rng, 0.0, 1.3 * radius);
     let ray = ray(rng, Some(aim));
@@ -96,15 +183,7 @@ fn sphere(rng: &mut Rng) -> Option<Case> {
     if (0.95..1.05).contains(&miss) {
         return None;
     }
-    let roots = ch02_hits::sphere_roots_abc(center, radius, &ray);
-    Some(Case {
-        input: format!(
-            "sphere m {}, ρ {radius:?}; {}",
-            show(center),
-            show_ray(&ray)
-        ),
-        value: json!(roots.map(|(a, b)| [a, b])),
-    })
+    Some(sphere_case(center, radius, &ray))
 }
 
 fn nearest(rng: &mut Rng) -> Option<Case> {
@@ -114,22 +193,92 @@ fn nearest(rng: &mut Rng) -> Option<Case> {
     } else {
         number(rng, -4.0, 14.0)
     };
-    let (near, far) = (a.min(b), a.max(b));
     let range = (number(rng, -2.0, 2.0), number(rng, 2.5, 12.0));
-    if near_ends(near, range, 1e-3) || near_ends(far, range, 1e-3) {
-        return None;
-    }
+    // A root exactly at an end of the range, one case in three: the ends
+    // are not in it. (The roots are given: no rounding can move them.)
+    let end = [range.0, range.1][whole(rng, 0, 1) as usize];
+    let (a, b) = match whole(rng, 0, 5) {
+        0 => (end, b),
+        1 => (a, end),
+        _ => (a, b),
+    };
+    let (near, far) = (a.min(b), a.max(b));
     let root = ch02_hits::nearest_root((near, far), range.0, range.1);
     Some(Case {
         input: format!(
             "roots ({near:?}, {far:?}); t in ({:?}, {:?})",
             range.0, range.1
         ),
-        value: json!(root),
+        value: root.map_or(Value::Null, num),
     })
 }
 
+fn triangle_case(vertices: [Vec3; 3], ray: &Ray, range: (f32, f32)) -> Case {
+    let hit = ch02_hits::triangle_by_plane(vertices, ray, range.0, range.1);
+    let [p0, p1, p2] = vertices;
+    Case {
+        input: format!(
+            "triangle {}, {}, {}; {}; t in ({:?}, {:?})",
+            show(p0),
+            show(p1),
+            show(p2),
+            show_ray(ray),
+            range.0,
+            range.1
+        ),
+        value: hit.map_or(Value::Null, |(t, a, b)| json!([num(t), num(a), num(b)])),
+    }
+}
+
+/// Corners and edges in exact numbers: a triangle in a plane across an
+/// axis, and a ray along the axis through a corner, or through a point of
+/// an edge from p0 (a barycentric coordinate exactly 0: on the triangle,
+/// so a hit); or through an inside point, with the triangle behind the ray
+/// (no hit in a range from 0).
+fn triangle_edge(rng: &mut Rng) -> Case {
+    let across = axis(rng);
+    let level = exact(rng, 4.0) * across.abs();
+    let in_plane = |rng: &mut Rng| exact_point(rng, 4.0) * (Vec3::ONE - across.abs()) + level;
+    let vertices = loop {
+        let vertices = [in_plane(rng), in_plane(rng), in_plane(rng)];
+        let [p0, p1, p2] = vertices;
+        if (p1 - p0).cross(p2 - p0).length() > 1.0 {
+            break vertices;
+        }
+    };
+    let [p0, p1, p2] = vertices;
+    let share = (2 * whole(rng, 0, 31) + 1) as f32 / 64.0;
+    let behind = chance(rng, 0.2);
+    let through = match whole(rng, 0, 4) {
+        _ if behind => p0 + (p1 - p0) * 0.25 + (p2 - p0) * 0.25,
+        0 => p0,
+        1 => p1,
+        2 => p2,
+        3 => p0 + (p1 - p0) * share,
+        _ => p0 + (p2 - p0) * share,
+    };
+    let distance = exact(rng, 4.0).abs();
+    let towards = axis_sign(rng) * across;
+    let ray = Ray {
+        origin: through - towards * distance,
+        direction: if behind { -towards } else { towards },
+    };
+    let range = match behind || chance(rng, 0.5) {
+        true => (0.0, f32::INFINITY),
+        false => (distance * 0.5, distance * 2.0),
+    };
+    triangle_case(vertices, &ray, range)
+}
+
+/// +1 or −1.
+fn axis_sign(rng: &mut Rng) -> f32 {
+    if chance(rng, 0.5) { 1.0 } else { -1.0 }
+}
+
 fn triangle(rng: &mut Rng) -> Option<Case> {
+    if chance(rng, 0.3) {
+        return Some(triangle_edge(rng));
+    }
     let p0 = point(rng, 5.0);
     let (p1, p2) = (p0 + point(rng, 3.0), p0 + point(rng, 3.0));
     let normal = (p1 - p0).cross(p2 - p0);
@@ -150,19 +299,7 @@ fn triangle(rng: &mut Rng) -> Option<Case> {
     if near_ends(t, range, 1e-2) {
         return None;
     }
-    let hit = ch02_hits::triangle_by_plane([p0, p1, p2], &ray, range.0, range.1);
-    Some(Case {
-        input: format!(
-            "triangle {}, {}, {}; {}; t in ({:?}, {:?})",
-            show(p0),
-            show(p1),
-            show(p2),
-            show_ray(&ray),
-            range.0,
-            range.1
-        ),
-        value: json!(hit.map(|(t, a, b)| [t, a, b])),
-    })
+    Some(triangle_case([p0, p1, p2], &ray, range))
 }
 
 /// The closest of a few spheres, planes and triangles, found with the
@@ -179,7 +316,22 @@ fn closest(rng: &mut Rng) -> Option<Case> {
         .collect();
     let aim = point(rng, 4.0);
     let ray = ray(rng, Some(aim));
-    let range = range(rng);
+    // One case in three starts the range further out, past some objects.
+    let range = match chance(rng, 0.3) {
+        true => {
+            let t_min = number(rng, 2.0, 8.0);
+            (t_min, t_min + number(rng, 1.0, 6.0))
+        }
+        false => range(rng),
+    };
+    let near_an_end = |t: f32| {
+        let window = ((t - 1e-2).max(0.0), t + 1e-2);
+        let hit = |o: &Object| ch02_hits::intersect(&o.shape, &ray, window.0, window.1);
+        objects.iter().any(|o| hit(o).is_some())
+    };
+    if near_an_end(range.0) || near_an_end(range.1) {
+        return None;
+    }
     let mut ts: Vec<f32> = (objects.iter())
         .filter_map(|o| ch02_hits::intersect(&o.shape, &ray, range.0, range.1))
         .collect();

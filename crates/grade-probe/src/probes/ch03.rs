@@ -3,7 +3,7 @@
 
 use super::Probe;
 use crate::Case;
-use crate::draw::{Rng, chance, number, point, show, unit, v3, whole};
+use crate::draw::{Rng, axis, chance, exact_point, number, point, show, unit, v3, whole};
 use ch03_lambert::toolkit::scene::{Falloff, Light, Material};
 use ch03_lambert::toolkit::{Color, Vec3};
 use ch03_lambert::{Hit, Incoming, Surface};
@@ -47,13 +47,17 @@ pub(super) fn material(rng: &mut Rng) -> Material {
 }
 
 /// A surface made field by field (no closest hit, no `Surface::new`).
+/// Half of them are back faces: the hit's normals face away from the eye,
+/// and the surface's `normal` is them turned (`Surface::new`'s rule), so
+/// shading with the hit's normal instead shows in the values.
 fn surface<'a>(rng: &mut Rng, material: &'a Material) -> Surface<'a> {
     let normal = unit(rng);
+    let geometric = if chance(rng, 0.5) { -normal } else { normal };
     let hit = Hit {
         t: number(rng, 0.5, 20.0),
         point: point(rng, 5.0),
-        normal,
-        shading_normal: normal,
+        normal: geometric,
+        shading_normal: geometric,
         error: 1e-6,
         object: 0,
     };
@@ -100,10 +104,24 @@ fn bit(x: f32, which: u32) -> bool {
 /// another exercise) with a `visible` that records which lights it was
 /// asked about and answers by the light, and a `reflect` that is not the
 /// student's `lambert` and is black for some lights.
+///
+/// One case in four adds a point light exactly in the surface's plane
+/// (in exact numbers, `draw::exact`, on a surface whose normal is an
+/// axis): n·l = 0 exactly, so it is behind the surface, never asked about.
 fn light_loop(rng: &mut Rng) -> Option<Case> {
     let material = material(rng);
-    let surface = surface(rng, &material);
-    let lights: Vec<Light> = (0..whole(rng, 0, 6))
+    let mut surface = surface(rng, &material);
+    let in_plane = chance(rng, 0.25);
+    if in_plane {
+        let n = axis(rng);
+        (
+            surface.normal,
+            surface.hit.normal,
+            surface.hit.shading_normal,
+        ) = (n, n, n);
+        surface.hit.point = exact_point(rng, 4.0);
+    }
+    let mut lights: Vec<Light> = (0..whole(rng, 0, 6))
         .map(|_| match chance(rng, 0.25) {
             true => Light::Ambient {
                 color: color(rng, 0.0, 0.3),
@@ -130,6 +148,23 @@ fn light_loop(rng: &mut Rng) -> Option<Case> {
     });
     if grazing {
         return None;
+    }
+    if in_plane {
+        let along = loop {
+            let along = exact_point(rng, 4.0) * (Vec3::ONE - surface.normal.abs());
+            if along.length() > 0.5 {
+                break along;
+            }
+        };
+        let at = whole(rng, 0, lights.len() as u32) as usize;
+        let light = Light::Point {
+            position: surface.hit.point + along,
+            color: color(rng, 0.1, 1.0),
+            intensity: number(rng, 1.0, 40.0),
+            shadows: true,
+            falloff: Falloff::InverseSquare,
+        };
+        lights.insert(at, light);
     }
     let mut scene = crate::scenes::parse(crate::scenes::EMPTY);
     scene.lights = lights;

@@ -12,9 +12,9 @@ use super::Probe;
 use super::ch02::{ray, shape, show_ray};
 use super::ch03::{color, material};
 use crate::Case;
-use crate::draw::{Rng, chance, number, point, show, unit, v3, whole};
-use ch04_shadows::toolkit::Stats;
+use crate::draw::{Rng, axis, chance, number, point, show, unit, v3, whole};
 use ch04_shadows::toolkit::scene::{Material, Object};
+use ch04_shadows::toolkit::{Stats, Vec3};
 use ch04_shadows::{Hit, Incoming, Ray, ShadowStart, Surface, World};
 use serde_json::{Value, json};
 
@@ -89,11 +89,21 @@ pub(super) fn show_hit(hit: &Hit) -> String {
     )
 }
 
+/// One case in six leaves exactly along the surface (a normal along an
+/// axis, a direction with no part along it): that counts as the side the
+/// normal faces.
 fn offset(rng: &mut Rng) -> Option<Case> {
-    let hit = hit(rng);
-    let towards = unit(rng) * number(rng, 0.3, 3.0);
-    if hit.normal.dot(towards.normalize()).abs() < 0.02 {
-        return None; // nearly along the surface: the tests check that case
+    let mut hit = hit(rng);
+    let along = chance(rng, 1.0 / 6.0);
+    let towards = match along {
+        true => {
+            hit.normal = axis(rng);
+            unit(rng) * (Vec3::ONE - hit.normal.abs())
+        }
+        false => unit(rng) * number(rng, 0.3, 3.0),
+    };
+    if !along && hit.normal.dot(towards.normalize()).abs() < 0.02 {
+        return None; // nearly along the surface: rounding may decide the side
     }
     let origin = ch04_shadows::offset_origin(&hit, towards);
     Some(Case {

@@ -122,7 +122,11 @@ fn highlight(rng: &mut Rng) -> Option<Case> {
     let h = leaning(rng, n, lean);
     let apart = number(rng, 0.0, 1.4);
     let v = leaning(rng, h, apart);
-    let l = (2.0 * h.dot(v) * h - v).normalize();
+    // One case in ten: l exactly opposite v, where h has no direction.
+    let l = match chance(rng, 0.1) {
+        true => -v,
+        false => (2.0 * h.dot(v) * h - v).normalize(),
+    };
     surface.to_eye = v;
     let incoming = ch05_reflection::Incoming {
         direction: l,

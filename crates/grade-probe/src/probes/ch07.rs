@@ -41,9 +41,25 @@ fn weight(rng: &mut Rng, min_weight: f32) -> Color {
     Color::new(channel(), channel(), channel())
 }
 
+/// `weight` with its largest channel set exactly to `min_weight`: not
+/// below it.
+fn at_threshold(weight: Color, min_weight: f32) -> Color {
+    let largest = weight.max_element();
+    Color::select(
+        weight.cmpeq(Color::splat(largest)),
+        Color::splat(min_weight),
+        weight.min(Color::splat(min_weight)),
+    )
+}
+
+/// One case in four has a channel exactly at the threshold (not below it).
 fn below_threshold(rng: &mut Rng) -> Option<Case> {
     let min_weight = threshold(rng);
     let weight = weight(rng, min_weight);
+    let weight = match chance(rng, 0.25) {
+        true => at_threshold(weight, min_weight),
+        false => weight,
+    };
     let below = ch07_termination::below_threshold(weight, min_weight);
     Some(Case {
         input: format!("weight {}, min_weight {min_weight:?}", show(weight)),
@@ -51,16 +67,21 @@ fn below_threshold(rng: &mut Rng) -> Option<Case> {
     })
 }
 
-/// The values: the answer and the counters.
+/// The values: the answer and the counters. Some rays are exactly at the
+/// maximum depth, some weights exactly at the threshold: both may go on.
 fn may_trace(rng: &mut Rng) -> Option<Case> {
     let termination = Termination {
         max_depth: whole(rng, 0, 6),
         min_weight: threshold(rng),
     };
-    let depth = whole(rng, 1, 8);
-    let weight = match chance(rng, 0.3) {
-        true => color(rng, 0.3, 1.0),
-        false => weight(rng, termination.min_weight),
+    let depth = match chance(rng, 0.25) {
+        true => termination.max_depth.max(1),
+        false => whole(rng, 1, 8),
+    };
+    let weight = match whole(rng, 0, 9) {
+        0..=2 => color(rng, 0.3, 1.0),
+        3 | 4 => at_threshold(weight(rng, termination.min_weight), termination.min_weight),
+        _ => weight(rng, termination.min_weight),
     };
     let mut stats = Stats::default();
     let tracer = Tracer { termination };
