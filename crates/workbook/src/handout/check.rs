@@ -95,76 +95,10 @@ impl Check {
     }
 
     /// Links the registry dependencies that the main build has compiled
-    /// into the check's target folder, where they are not there yet: their
-    /// artifacts, fingerprints and build-script outputs. The workbook's own
-    /// crates are left out; cargo builds them anew.
+    /// into the check's target folder (`share::registry_builds`).
     fn share_dependencies(&self) -> Result<(), String> {
-        let metadata = cargo_metadata::MetadataCommand::new()
-            .current_dir(&self.root)
-            .exec()
-            .map_err(|e| format!("cargo metadata: {e}"))?;
-        let main = metadata.target_directory.as_std_path().join("debug");
-        let registry: Vec<_> = metadata
-            .packages
-            .iter()
-            .filter(|p| p.source.is_some())
-            .collect();
-        let packages: BTreeSet<String> = registry.iter().map(|p| p.name.to_string()).collect();
-        let crates: BTreeSet<String> = registry
-            .iter()
-            .flat_map(|p| p.targets.iter().map(|t| t.name.replace('-', "_")))
-            .collect();
-        // deps/ holds lib<crate>-<hash>.rlib and <crate>-<hash>.d;
-        // .fingerprint/ and build/ hold <package>-<hash> folders.
-        let stem = |name: &str| {
-            let name = name.strip_prefix("lib").unwrap_or(name);
-            name.rsplit_once('-').map(|(stem, _)| stem.to_owned())
-        };
-        let debug = self.target.join("debug");
-        link_matching(&main.join("deps"), &debug.join("deps"), |n| {
-            stem(n).is_some_and(|s| crates.contains(&s))
-        })
-        .and_then(|()| {
-            for folder in [".fingerprint", "build"] {
-                link_matching(&main.join(folder), &debug.join(folder), |n| {
-                    n.rsplit_once('-')
-                        .is_some_and(|(s, _)| packages.contains(s))
-                })?;
-            }
-            Ok(())
-        })
-        .map_err(|e| format!("cannot link the main build's dependencies: {e}"))
+        super::share::registry_builds(&self.root, &self.target, super::share::How::Link).map(|_| ())
     }
-}
-
-/// Hard-links each entry of `from` whose name is chosen (folders with all
-/// they hold) into `to`, unless it is there already.
-fn link_matching(from: &Path, to: &Path, chosen: impl Fn(&str) -> bool) -> std::io::Result<()> {
-    let Ok(entries) = std::fs::read_dir(from) else {
-        return Ok(());
-    };
-    std::fs::create_dir_all(to)?;
-    for entry in entries {
-        let entry = entry?;
-        let name = entry.file_name().to_string_lossy().into_owned();
-        if chosen(&name) {
-            link_tree(&entry.path(), &to.join(&name))?;
-        }
-    }
-    Ok(())
-}
-
-fn link_tree(from: &Path, to: &Path) -> std::io::Result<()> {
-    if from.is_dir() {
-        std::fs::create_dir_all(to)?;
-        for entry in std::fs::read_dir(from)? {
-            let entry = entry?;
-            link_tree(&entry.path(), &to.join(entry.file_name()))?;
-        }
-    } else if !to.exists() && std::fs::hard_link(from, to).is_err() {
-        std::fs::copy(from, to)?;
-    }
-    Ok(())
 }
 
 /// Removes the files under `dir` that are not in `keep` (left over from an

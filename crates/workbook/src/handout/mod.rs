@@ -6,6 +6,7 @@
 
 pub mod check;
 pub mod record;
+pub mod share;
 pub mod take_out;
 
 use std::path::{Path, PathBuf};
@@ -101,6 +102,7 @@ pub fn write_handout_from(root: &Path, dir: &Path, solved_through: u32) -> Resul
         root.display(),
         dir.display()
     );
+    share_builds(&root, dir);
     if solved_through > 0 {
         println!("the exercises of chapters 1 to {solved_through} are solved");
     }
@@ -114,6 +116,22 @@ pub fn write_handout_from(root: &Path, dir: &Path, solved_through: u32) -> Resul
         dir.display()
     );
     Ok(())
+}
+
+/// Copies into the handout's target folder the registry crates this
+/// workspace has compiled already (the workbook's tools' at least: this
+/// command was built with them), so that the handout's first `progress`
+/// compiles only what is new there. Says what it did; a failure costs only
+/// time, so it is a note, not an error.
+fn share_builds(root: &Path, dir: &Path) {
+    match share::registry_builds(root, &dir.join("target"), share::How::Copy) {
+        Ok(0) => {}
+        Ok(n) => println!(
+            "copied {n} compiled dependencies from {}/target",
+            root.display()
+        ),
+        Err(e) => println!("note: the handout builds its dependencies itself ({e})"),
+    }
 }
 
 /// The lecture's methods pass and the whole handout compiles.
