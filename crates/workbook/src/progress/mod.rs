@@ -139,9 +139,12 @@ fn progress_in(
 }
 
 /// What progress says as it starts in a workspace where it never ran: the
-/// one long wait, and why (measured in issue 39 on a busy 2-core machine).
-pub const FIRST_RUN: &str = "progress: first run here: cargo builds the chapters' tests and the \
-crates they use, once (a few minutes on a 2-core machine; every later run answers in seconds)...";
+/// one long wait, and why. Measured on a quiet 2-core machine (issue 39):
+/// about 40 s in a handout that got its compiled dependencies from the
+/// clone it was written from, about 80 s in one that did not.
+pub const FIRST_RUN: &str = "progress: first run here: cargo builds chapter 1's tests and the \
+crates they use, once (a minute or so on a 2-core machine, a few where the handout has no \
+compiled dependencies yet; every later run answers in seconds)...";
 
 /// How many chapters' `cargo test` may run at once: one builds (cargo
 /// builds one at a time) while the tests of another run.
