@@ -189,12 +189,73 @@ fn workbook_handout_writes_a_copy_and_refuses_a_folder_in_use() {
         std::fs::read(root().join("snapshots/03-lambert/default.snap.png")).unwrap(),
         "the references come along"
     );
-    assert!(!dir.join("target").exists() && !dir.join(".git").exists());
+    assert!(!dir.join(".git").exists());
+    only_registry_builds_copied(&dir.join("target"));
 
     // The same folder again: it is not empty now.
     let again = handout(&dir);
     assert!(!again.status.success());
     assert!(String::from_utf8_lossy(&again.stderr).contains("is not empty"));
+}
+
+/// The handout's `target/` holds at most the registry crates' compiled
+/// files that `handout` copied from the workspace's build (so that its
+/// first build compiles only the workspace's own crates): none of the
+/// workspace's own crates, nothing outside `debug/deps`, `.fingerprint`
+/// and `build`, and copies only, never a file shared with the clone's.
+fn only_registry_builds_copied(target: &Path) {
+    use std::os::unix::fs::MetadataExt;
+    let ours: Vec<String> = ["chapters", "crates"]
+        .iter()
+        .flat_map(|folder| std::fs::read_dir(root().join(folder)).unwrap())
+        .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+        .map(|name| match name.split_once('-') {
+            Some((n, rest)) if n.len() == 2 || n == "04b" => format!("ch{n}_{rest}"),
+            _ => name,
+        })
+        .map(|name| name.replace('-', "_"))
+        .chain(["raybook".to_owned()])
+        .collect();
+    let Ok(debug) = std::fs::read_dir(target.join("debug")) else {
+        return; // nothing compiled to copy (a fresh clone's first run)
+    };
+    for entry in debug {
+        let entry = entry.unwrap();
+        let folder = entry.file_name().to_string_lossy().to_string();
+        assert!(
+            ["deps", ".fingerprint", "build"].contains(&folder.as_str()),
+            "target/debug/{folder} came along"
+        );
+        for file in walk(&entry.path()) {
+            let name = file
+                .file_name()
+                .unwrap()
+                .to_string_lossy()
+                .replace('-', "_");
+            let name = name.strip_prefix("lib").unwrap_or(&name).to_owned();
+            assert!(
+                !ours
+                    .iter()
+                    .any(|crate_| name.starts_with(&format!("{crate_}_"))),
+                "the workspace's own crate came along: {}",
+                file.display()
+            );
+            assert_eq!(file.metadata().unwrap().nlink(), 1, "{}", file.display());
+        }
+    }
+}
+
+/// Every file under `dir`.
+fn walk(dir: &Path) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        match path.is_dir() {
+            true => files.extend(walk(&path)),
+            false => files.push(path),
+        }
+    }
+    files
 }
 
 /// A line as the leak test compares it: trimmed, runs of whitespace made

@@ -72,12 +72,23 @@ pub fn main(args: &HandoutArgs) -> ExitCode {
 
 /// Writes the handout into `dir`, with the exercises of chapters 1 to
 /// `solved_through` left solved.
+/// Then it copies in the registry crates this workspace has compiled
+/// ([`share_builds`]).
 fn write_handout(dir: &Path, solved_through: u32) -> Result<(), String> {
-    write_handout_from(&current_workspace()?, dir, solved_through)
+    let root = current_workspace()?;
+    write_handout_from(&root, dir, solved_through)?;
+    share_builds(&root, dir);
+    println!(
+        "\nnext: cd {} && cargo run -q -p workbook -- progress\n      \
+         then read chapters/01-rays/README.md and write the exercises of chapter 1",
+        dir.display()
+    );
+    Ok(())
 }
 
-/// [`write_handout`] from the workspace at `root` (the grader's tests make
-/// handouts of a still snapshot of the reference).
+/// [`write_handout`]'s files, from the workspace at `root` (the grader's
+/// tests make handouts of a still snapshot of the reference): no compiled
+/// crate is copied.
 pub fn write_handout_from(root: &Path, dir: &Path, solved_through: u32) -> Result<(), String> {
     let root = root.to_owned();
     if let Ok(mut entries) = std::fs::read_dir(dir)
@@ -102,7 +113,6 @@ pub fn write_handout_from(root: &Path, dir: &Path, solved_through: u32) -> Resul
         root.display(),
         dir.display()
     );
-    share_builds(&root, dir);
     if solved_through > 0 {
         println!("the exercises of chapters 1 to {solved_through} are solved");
     }
@@ -110,11 +120,6 @@ pub fn write_handout_from(root: &Path, dir: &Path, solved_through: u32) -> Resul
     for (file, line, region) in &written.regions {
         println!("  {:<20} {}:{line}", region.id, file.display());
     }
-    println!(
-        "\nnext: cd {} && cargo run -q -p workbook -- progress\n      \
-         then read chapters/01-rays/README.md and write the exercises of chapter 1",
-        dir.display()
-    );
     Ok(())
 }
 
