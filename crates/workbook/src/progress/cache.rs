@@ -72,6 +72,15 @@ pub fn passed_last_time(root: &Path, chapter: &ChapterEntry) -> bool {
     load(root, chapter).is_some_and(|(_, output)| output.passed_all())
 }
 
+/// How much older than a run's start an input must be to count as older.
+/// A file's modification time comes from the kernel's coarse clock, up to
+/// a tick (1 to 4 ms) behind the clock a run's start is read from, and the
+/// start is kept to the millisecond: a file saved within a few
+/// milliseconds after the start could otherwise look older, and its edit
+/// be missed. An input written within this margin of a start counts as
+/// written after it (tested again: the safe side).
+const CLOCK_MARGIN: Duration = Duration::from_millis(10);
+
 /// The files of the workspace's top folder that are inputs: what cargo
 /// builds with.
 const BUILD_FILES: [&str; 4] = [
@@ -113,13 +122,16 @@ impl Inputs {
     }
 
     /// `chapter`'s last result, if none of its inputs changed since that
-    /// run started.
+    /// run started: all are older than its start by more than
+    /// [`CLOCK_MARGIN`].
     pub fn unchanged_result(&self, root: &Path, chapter: &ChapterEntry) -> Option<TestOutput> {
         let (started, output) = load(root, chapter)?;
         let newest = (self.newest.range(..=chapter.number()))
             .map(|(_, time)| *time)
             .max();
-        newest.is_some_and(|t| t < started).then_some(output)
+        newest
+            .is_some_and(|t| t + CLOCK_MARGIN < started)
+            .then_some(output)
     }
 
     /// Counts `path` (and all under it, if a folder) under key `number`.

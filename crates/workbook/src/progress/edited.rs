@@ -86,7 +86,10 @@ pub fn last_changed<'a>(
         let files = files_in(&dir);
         let changed = files
             .iter()
-            .filter(|(file, time)| *time > since && before.get(file).copied() != digest(file));
+            // `>=`: a save in the same tick of the file system's coarse
+            // clock as the last run's stamp has the same time; the digest
+            // decides then.
+            .filter(|(file, time)| *time >= since && before.get(file).copied() != digest(file));
         let newest = changed.map(|(_, time)| *time).max();
         // A file of the last run that is gone: the chapter changed when
         // the folder that held it did.
