@@ -137,12 +137,20 @@ fn start(rng: &mut Rng) -> ShadowStart {
 /// The values are the ray's origin relative to where it is to start (the
 /// student's own `offset_origin`, or the hit point), its direction, and
 /// t_max minus the distance from that origin to the light.
+///
+/// The error bound is kept small here (0.005 to 0.01) and the light at
+/// least 2 away: t_max is then the distance from the origin to the light
+/// whether it is measured straight or along l (the two part by at most
+/// e²/2r, 2.5e-5), while a t_max measured from the hit point instead of the
+/// origin is off by e·|n·l| ≥ 5e-4.
 fn shadow_ray(rng: &mut Rng) -> Option<Case> {
     let material = material(rng);
-    let surface = surface(rng, &material);
-    let incoming = incoming(rng, true);
+    let mut surface = surface(rng, &material);
+    surface.hit.error = number(rng, 0.005, 0.01);
+    let mut incoming = incoming(rng, true);
+    incoming.distance = number(rng, 2.0, 20.0);
     let start = start(rng);
-    if surface.hit.normal.dot(incoming.direction).abs() < 0.05 {
+    if surface.hit.normal.dot(incoming.direction).abs() < 0.1 {
         return None;
     }
     let (ray, t_max) = ch04_shadows::shadow_ray(&surface, &incoming, start);
@@ -229,7 +237,9 @@ impl World for Recording {
 
 /// The values: whether the light is free, the counters, and each question
 /// asked of the world: its ray relative to the student's own `shadow_ray`,
-/// t_min, and t_max relative to that ray's.
+/// whether it starts at the origin (a t_min of at most 0.01: an epsilon is
+/// no mistake), and whether it ends at the light (a t_max within 1% of
+/// that ray's).
 fn light_is_free(rng: &mut Rng) -> Option<Case> {
     let material = material(rng);
     let surface = surface(rng, &material);
@@ -248,8 +258,8 @@ fn light_is_free(rng: &mut Rng) -> Option<Case> {
             json!([
                 v3(ray.origin - own.origin),
                 v3(ray.direction - own.direction),
-                t_min,
-                t_max - own_t_max
+                *t_min <= 0.01,
+                (t_max / own_t_max - 1.0).abs() < 0.01
             ])
         })
         .collect();
