@@ -67,7 +67,8 @@ fn below_threshold(rng: &mut Rng) -> Option<Case> {
     })
 }
 
-/// The values: the answer and the counters. Some rays are exactly at the
+/// The values: the answer and the counters (within the depth, relative to
+/// the student's own `below_threshold`). Some rays are exactly at the
 /// maximum depth, some weights exactly at the threshold: both may go on.
 fn may_trace(rng: &mut Rng) -> Option<Case> {
     let termination = Termination {
@@ -86,6 +87,19 @@ fn may_trace(rng: &mut Rng) -> Option<Case> {
     let mut stats = Stats::default();
     let tracer = Tracer { termination };
     let may = tracer.may_trace(depth, weight, &mut stats);
+    let value = match depth > termination.max_depth {
+        true => json!([may, counts(&stats)]),
+        false => {
+            // Within the depth, relative to the student's own
+            // `below_threshold` (a mistake there costs that exercise
+            // alone): whether the answer is its negation (may != below), and the
+            // counters with the path it ends by the threshold taken off.
+            let below = ch07_termination::below_threshold(weight, termination.min_weight);
+            let mut counted = counts(&stats);
+            counted[6] = json!(stats.ended_threshold as i64 - below as i64);
+            json!([may != below, counted])
+        }
+    };
     Some(Case {
         input: format!(
             "depth {depth}, weight {}; max_depth {}, min_weight {:?}",
@@ -93,6 +107,6 @@ fn may_trace(rng: &mut Rng) -> Option<Case> {
             termination.max_depth,
             termination.min_weight
         ),
-        value: json!([may, counts(&stats)]),
+        value,
     })
 }
