@@ -24,20 +24,20 @@ pub fn parse(text: &str) -> Scene {
 
 /// The chapters whose scenes this build renders.
 pub fn chapters() -> Vec<&'static str> {
-    let mut all = vec!["01-rays"];
-    #[cfg(feature = "ch02")]
-    all.push("02-hits");
-    #[cfg(feature = "ch03")]
-    all.push("03-lambert");
-    #[cfg(feature = "ch04")]
-    all.push("04-shadows");
-    #[cfg(feature = "ch05")]
-    all.push("05-reflection");
-    #[cfg(feature = "ch06")]
-    all.push("06-refraction");
-    #[cfg(feature = "ch07")]
-    all.push("07-termination");
-    all
+    let built = [
+        ("01-rays", cfg!(feature = "ch01")),
+        ("02-hits", cfg!(feature = "ch02")),
+        ("03-lambert", cfg!(feature = "ch03")),
+        ("04-shadows", cfg!(feature = "ch04")),
+        ("05-reflection", cfg!(feature = "ch05")),
+        ("06-refraction", cfg!(feature = "ch06")),
+        ("07-termination", cfg!(feature = "ch07")),
+    ];
+    built
+        .into_iter()
+        .filter(|(_, on)| *on)
+        .map(|(c, _)| c)
+        .collect()
 }
 
 /// The seeded scenes of `chapter`.
@@ -213,14 +213,20 @@ fn image(rng: &mut Rng) -> String {
 fn objects(rng: &mut Rng) -> String {
     let mut text = String::new();
     for m in 0..3 {
-        let color = Vec3::new(
-            number(rng, 0.1, 1.0),
-            number(rng, 0.1, 1.0),
-            number(rng, 0.1, 1.0),
-        );
-        text += &format!("[materials.m{m}]\ncolor = {}\n", vector(color));
+        text += &matte(rng, m);
     }
     text + &shapes(rng, false)
+}
+
+/// The table of material `m{m}`, with a colour of its own.
+#[allow(dead_code)]
+fn matte(rng: &mut Rng, m: u32) -> String {
+    let color = Vec3::new(
+        number(rng, 0.1, 1.0),
+        number(rng, 0.1, 1.0),
+        number(rng, 0.1, 1.0),
+    );
+    format!("[materials.m{m}]\ncolor = {}\n", vector(color))
 }
 
 /// A plane, a few spheres and triangles near the origin, of the materials
@@ -301,12 +307,7 @@ fn lit_scene(rng: &mut Rng, camera: &str, chapter: u32) -> String {
     };
     text += &format!("[trace]\nmax_depth = {max_depth}\nmin_weight = {min_weight:?}\n");
     for m in 0..3 {
-        let color = Vec3::new(
-            number(rng, 0.1, 1.0),
-            number(rng, 0.1, 1.0),
-            number(rng, 0.1, 1.0),
-        );
-        text += &format!("[materials.m{m}]\ncolor = {}\n", vector(color));
+        text += &matte(rng, m);
         if chapter >= 5 && m > 0 {
             let reflectance = number(rng, 0.1, 0.8);
             text += &format!(

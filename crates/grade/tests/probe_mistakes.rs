@@ -42,7 +42,7 @@ fn feature(chapter: &ChapterEntry) -> String {
 /// variant is, has neither), each file written only if it changed.
 fn write_variant(check: &Check, root: &Path, body: impl Fn(&Region) -> Option<String>) {
     check.write_variant(body).unwrap();
-    let work = root.join("target/handout-check/work");
+    let work = root.join("target/probe-mistakes/work");
     let files = workbook::workspace::workspace_files(root).unwrap();
     let probe = files.iter().filter(|f| f.starts_with(PROBE));
     for file in probe.chain([&PathBuf::from("Cargo.lock")]) {
@@ -177,8 +177,11 @@ fn every_classic_mistake_loses_its_points_and_every_lecture_method_keeps_them() 
     };
     let only = if only == "1" { String::new() } else { only };
     let root = root();
-    let check = Check::new(&root).expect("the check's work folder");
-    let binary = root.join("target/handout-check/target/debug/grade-probe");
+    // A folder of its own: `handout --check-mistakes` writes its variants
+    // into target/handout-check, and the two may run at once.
+    let folder = root.join("target/probe-mistakes");
+    let check = Check::in_folder(&root, &folder).expect("the check's work folder");
+    let binary = folder.join("target/debug/grade-probe");
     let last = chapters::all().iter().rfind(|c| c.exercises).unwrap();
     write_variant(&check, &root, |_| None);
     build(&check, &feature(last)).expect("the reference's probe builds");

@@ -35,7 +35,13 @@ impl Check {
     /// A check of the workspace at `root`, its registry dependencies linked
     /// from the main build (`cargo test` or `cargo build` has run there).
     pub fn new(root: &Path) -> Result<Check, String> {
-        let base = root.join("target/handout-check");
+        Check::in_folder(root, &root.join("target/handout-check"))
+    }
+
+    /// A check that writes and builds its variants under `base` (its
+    /// `work/` and `target/`): two checks at once need two folders, or
+    /// each overwrites the other's variants.
+    pub fn in_folder(root: &Path, base: &Path) -> Result<Check, String> {
         let check = Check {
             root: root.to_owned(),
             work: base.join("work"),
