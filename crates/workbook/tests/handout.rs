@@ -196,6 +196,22 @@ fn workbook_handout_writes_a_copy_and_refuses_a_folder_in_use() {
     let again = handout(&dir);
     assert!(!again.status.success());
     assert!(String::from_utf8_lossy(&again.stderr).contains("is not empty"));
+
+    // --files-only: nothing compiled comes along.
+    let bare = base.join("files-only");
+    let out = Command::new(env!("CARGO_BIN_EXE_workbook"))
+        .args(["handout", "--files-only"])
+        .arg(&bare)
+        .current_dir(root())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(bare.join("chapters/01-rays/src/lib.rs").exists());
+    assert!(!bare.join("target").exists());
 }
 
 /// The handout's `target/` holds at most the registry crates' compiled
