@@ -206,7 +206,7 @@ fn pictures(
 }
 
 /// What is wrong with the student's picture of `scene`, if anything.
-fn picture_problem(scene: &Picture, theirs: Option<&Picture>) -> Option<String> {
+pub fn picture_problem(scene: &Picture, theirs: Option<&Picture>) -> Option<String> {
     let Some(theirs) = theirs else {
         return Some("is missing".to_owned());
     };

@@ -113,6 +113,8 @@ use workbench::chapters::{self, ChapterEntry};
 use workbook::workspace::current_workspace;
 
 pub use args::GradeArgs;
+/// The grader's rule for a seeded scene (the probe's mistakes check uses it).
+pub use judge::picture_problem;
 pub use result::{ChapterRun, StudentResult, Verdict};
 
 /// The version of what grading caches (the tests of each exercise, each

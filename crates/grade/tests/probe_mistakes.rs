@@ -22,7 +22,6 @@ use std::process::Command;
 
 use grade_probe::{Picture, Probed, first_disagreement};
 use workbench::chapters::{self, ChapterEntry};
-use workbench::compare::{Tolerance, Verdict, compare};
 use workbook::handout::check::{Check, mistakes_files};
 use workbook::regions::Region;
 use workbook::workspace::PROBE;
@@ -124,17 +123,10 @@ fn outputs(binary: &Path, ids: &[&str], folders: &[&str], seed: u64) -> Outputs 
     found
 }
 
-/// Do two sets of seeded scenes agree within the snapshots' tolerance?
+/// Do two sets of seeded scenes agree, by the grader's own rule?
 fn same_pictures(ours: &[Picture], theirs: &[Picture]) -> bool {
-    let image = |p: &Picture| image::RgbImage::from_raw(p.width, p.height, p.rgb.clone());
     ours.len() == theirs.len()
-        && ours.iter().zip(theirs).all(|(a, b)| {
-            let tolerance = Tolerance::for_size(a.width, a.height);
-            match (image(a), image(b)) {
-                (Some(a), Some(b)) => matches!(compare(&a, &b, tolerance), Verdict::Pass(_)),
-                _ => false,
-            }
-        })
+        && (ours.iter().zip(theirs)).all(|(a, b)| grade::picture_problem(a, Some(b)).is_none())
 }
 
 /// How the probe judged a variant of exercise `id` against `reference`:

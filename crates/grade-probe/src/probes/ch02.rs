@@ -236,9 +236,9 @@ fn triangle_case(vertices: [Vec3; 3], ray: &Ray, range: (f32, f32)) -> Case {
 /// so a hit); or through an inside point, with the triangle behind the ray
 /// (no hit in a range from 0).
 fn triangle_edge(rng: &mut Rng) -> Case {
-    let across = axis(rng);
-    let level = exact(rng, 4.0) * across.abs();
-    let in_plane = |rng: &mut Rng| exact_point(rng, 4.0) * (Vec3::ONE - across.abs()) + level;
+    let normal = axis(rng);
+    let level = exact(rng, 4.0) * normal.abs();
+    let in_plane = |rng: &mut Rng| exact_point(rng, 4.0) * (Vec3::ONE - normal.abs()) + level;
     let vertices = loop {
         let vertices = [in_plane(rng), in_plane(rng), in_plane(rng)];
         let [p0, p1, p2] = vertices;
@@ -258,7 +258,8 @@ fn triangle_edge(rng: &mut Rng) -> Case {
         _ => p0 + (p2 - p0) * share,
     };
     let distance = exact(rng, 4.0).abs();
-    let towards = axis_sign(rng) * across;
+    // `axis` has drawn the normal's sign: the ray comes from either side.
+    let towards = normal;
     let ray = Ray {
         origin: through - towards * distance,
         direction: if behind { -towards } else { towards },
@@ -268,11 +269,6 @@ fn triangle_edge(rng: &mut Rng) -> Case {
         false => (distance * 0.5, distance * 2.0),
     };
     triangle_case(vertices, &ray, range)
-}
-
-/// +1 or −1.
-fn axis_sign(rng: &mut Rng) -> f32 {
-    if chance(rng, 0.5) { 1.0 } else { -1.0 }
 }
 
 fn triangle(rng: &mut Rng) -> Option<Case> {

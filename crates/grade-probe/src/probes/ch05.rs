@@ -151,12 +151,14 @@ fn highlight(rng: &mut Rng) -> Option<Case> {
 
 /// A tracer whose answers the probe fixes: a local colour from the hit's
 /// distance, fixed secondary rays, and `may_trace` by a depth and a weight
-/// limit; it records the surfaces it was asked to light.
+/// limit; it records the surfaces it was asked to light and each (depth,
+/// weight) `may_trace` was offered.
 struct Scripted {
     rays: [Option<Secondary>; 2],
     depth_limit: u32,
     weight_limit: f32,
     lit: Mutex<Vec<(f32, Vec3)>>,
+    offered: Mutex<Vec<(u32, Color)>>,
 }
 
 impl Scripted {
@@ -179,6 +181,7 @@ impl Scripted {
             depth_limit: whole(rng, 0, 4),
             weight_limit: number(rng, 0.0, 0.4),
             lit: Mutex::new(Vec::new()),
+            offered: Mutex::new(Vec::new()),
         }
     }
 
@@ -221,6 +224,7 @@ impl Whitted for Scripted {
     }
 
     fn may_trace(&self, depth: u32, weight: Color, _: &mut Stats) -> bool {
+        self.offered.lock().unwrap().push((depth, weight));
         self.allows(depth, weight)
     }
 }
@@ -376,20 +380,16 @@ fn recursion(rng: &mut Rng) -> Option<Case> {
         asked: Mutex::new(Vec::new()),
     };
     let path = path(rng);
-    let offered = Mutex::new(Vec::new());
-    let recording = Offered {
-        tracer: &tracer,
-        offered: &offered,
-    };
     let mut stats = Stats::default();
     let color = ch05_reflection::follow_secondary_rays(
-        &recording,
+        &tracer,
         &scene,
         &world,
         tracer.rays,
         path,
         &mut stats,
     );
+    let offered = std::mem::take(&mut *tracer.offered.lock().unwrap());
     let mut expected = Color::ZERO;
     for s in tracer.rays.iter().flatten() {
         let next = Path {
@@ -402,7 +402,7 @@ fn recursion(rng: &mut Rng) -> Option<Case> {
             expected += s.weight * seen;
         }
     }
-    let offered: Vec<Value> = (offered.into_inner().unwrap().iter())
+    let offered: Vec<Value> = (offered.iter())
         .map(|(depth, weight)| json!([depth, v3(*weight)]))
         .collect();
     Some(Case {
@@ -419,31 +419,4 @@ fn recursion(rng: &mut Rng) -> Option<Case> {
             offered
         ]),
     })
-}
-
-/// The scripted tracer, recording what `may_trace` is offered.
-struct Offered<'a> {
-    tracer: &'a Scripted,
-    offered: &'a Mutex<Vec<(u32, Color)>>,
-}
-
-impl Whitted for Offered<'_> {
-    fn local(
-        &self,
-        scene: &Scene,
-        world: &(impl World + ?Sized),
-        surface: &Surface,
-        stats: &mut Stats,
-    ) -> Color {
-        self.tracer.local(scene, world, surface, stats)
-    }
-
-    fn secondary_rays(&self, surface: &Surface, ray: &Ray) -> [Option<Secondary>; 2] {
-        self.tracer.secondary_rays(surface, ray)
-    }
-
-    fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
-        self.offered.lock().unwrap().push((depth, weight));
-        self.tracer.may_trace(depth, weight, stats)
-    }
 }
