@@ -348,7 +348,7 @@ fn a_symlink_or_a_fifo_as_a_failure_picture_is_refused_and_noted() {
     let block = flags.iter().find(|f| f.contains("block.diff.png"));
     assert!(block.is_some_and(|f| f.contains("a FIFO")), "{flags:?}");
     // Nothing of the secret reached the report.
-    for entry in walk(&graded.report) {
+    for entry in test_support::files_under(&graded.report) {
         let bytes = std::fs::read(&entry).unwrap_or_default();
         let text = String::from_utf8_lossy(&bytes);
         assert!(
@@ -411,21 +411,4 @@ fn a_csv_cell_that_begins_with_a_tab_is_neutralised() {
     let cells = graded.csv.split([',', '\n']);
     assert!(cells.clone().all(|c| !c.starts_with('\t')));
     assert_eq!(score(&graded.rows["'\t=SUM(1)"]), ("3", "3"));
-}
-
-/// Every file under `dir`.
-fn walk(dir: &Path) -> Vec<PathBuf> {
-    let mut files = Vec::new();
-    let mut folders = vec![dir.to_owned()];
-    while let Some(folder) = folders.pop() {
-        for entry in std::fs::read_dir(folder).into_iter().flatten().flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                folders.push(path);
-            } else {
-                files.push(path);
-            }
-        }
-    }
-    files
 }

@@ -1,13 +1,15 @@
 //! What the tests of several crates share, in one place: the tests'
 //! random numbers ([`Rng`]), proptest strategies for shapes
 //! ([`strategies`]), running a binary with its output closed
-//! ([`closed_pipe`]) and reading the bench's Markdown tables
-//! ([`table_row`]).
+//! ([`closed_pipe`]), reading the bench's Markdown tables
+//! ([`table_row`]) and listing the files under a folder ([`files_under`]).
 
 pub mod closed_pipe;
+mod files;
 pub mod strategies;
 pub mod table_row;
 
 mod rng;
 
+pub use files::files_under;
 pub use rng::Rng;

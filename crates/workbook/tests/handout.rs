@@ -242,7 +242,7 @@ fn only_registry_builds_copied(target: &Path) {
             ["deps", ".fingerprint", "build"].contains(&folder.as_str()),
             "target/debug/{folder} came along"
         );
-        for file in walk(&entry.path()) {
+        for file in test_support::files_under(&entry.path()) {
             let name = file
                 .file_name()
                 .unwrap()
@@ -259,19 +259,6 @@ fn only_registry_builds_copied(target: &Path) {
             assert_eq!(file.metadata().unwrap().nlink(), 1, "{}", file.display());
         }
     }
-}
-
-/// Every file under `dir`.
-fn walk(dir: &Path) -> Vec<PathBuf> {
-    let mut files = Vec::new();
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        match path.is_dir() {
-            true => files.extend(walk(&path)),
-            false => files.push(path),
-        }
-    }
-    files
 }
 
 /// A line as the leak test compares it: trimmed, runs of whitespace made
