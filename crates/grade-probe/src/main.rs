@@ -6,7 +6,13 @@
 //! grade-probe --seed S --exercise ID --out FILE   one exercise's values
 //! grade-probe --seed S --scenes FOLDER --out FILE a chapter's seeded scenes
 //!              [--png DIR]                        (and their PNGs, to look at)
+//! grade-probe ... --out-fd N                      the same, written to descriptor N
 //! ```
+//!
+//! The grader always says `--out-fd`: it passes the writing end of a pipe
+//! it opened, and reads the values from the other end, so that no file
+//! (which the student's code, linked into this binary, could replace with
+//! a link) carries them. `--out FILE` is for a teacher trying the probe.
 
 use std::collections::BTreeMap;
 use std::process::ExitCode;
@@ -41,7 +47,14 @@ fn probe(args: Vec<String>) -> Result<(), String> {
     let seed: u64 = seed
         .parse()
         .map_err(|_| format!("--seed {seed}: not a number"))?;
-    let out = value("--out").ok_or("--out FILE is missing")?;
+    let out = match (value("--out"), value("--out-fd")) {
+        (_, Some(fd)) => Out::Descriptor(
+            fd.parse()
+                .map_err(|_| format!("--out-fd {fd}: not a number"))?,
+        ),
+        (Some(file), None) => Out::File(file),
+        (None, None) => return Err("--out FILE or --out-fd N is missing".into()),
+    };
     let mut probed = Probed {
         format: FORMAT.to_owned(),
         seed,
@@ -61,5 +74,31 @@ fn probe(args: Vec<String>) -> Result<(), String> {
         return Err("say --exercise ID or --scenes FOLDER".into());
     }
     let json = serde_json::to_vec(&probed).map_err(|e| e.to_string())?;
-    std::fs::write(&out, json).map_err(|e| format!("cannot write {out}: {e}"))
+    out.write(&json)
+}
+
+/// Where the values go.
+enum Out {
+    File(String),
+    Descriptor(i32),
+}
+
+impl Out {
+    fn write(self, json: &[u8]) -> Result<(), String> {
+        use std::io::Write;
+        use std::os::fd::FromRawFd;
+        match self {
+            Out::File(path) => {
+                std::fs::write(&path, json).map_err(|e| format!("cannot write {path}: {e}"))
+            }
+            Out::Descriptor(fd) => {
+                // SAFETY: the grader opened `fd` for this process and
+                // passes it to nothing else; it is closed when the File is
+                // dropped, which ends the grader's read.
+                let mut file = unsafe { std::fs::File::from_raw_fd(fd) };
+                file.write_all(json)
+                    .map_err(|e| format!("cannot write to descriptor {fd}: {e}"))
+            }
+        }
+    }
 }

@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::Arc;
 
+use super::beneath::Folder;
 use super::confine::{Room, confined, setup};
 use workbench::exercise::TAKE_OUT;
 
@@ -23,7 +24,14 @@ pub struct Place {
     /// none for the reference's base copy, which is all writable, and
     /// when grading without the sandbox.
     room: Option<Arc<Room>>,
+    /// The grader's own folder of this student's probes, built before any
+    /// of their code ran and kept where no student's run can write: shown
+    /// read-only to the runs at [`PROBES`].
+    probes: Option<PathBuf>,
 }
+
+/// Where a student's runs see their probes (a read-only mount).
+pub const PROBES: &str = "/raybook-probes";
 
 impl Place {
     /// The place of a copy: its target folder and scratch folder inside it.
@@ -33,6 +41,7 @@ impl Place {
             target: copy.join("target"),
             scratch: copy.join("target/scratch"),
             room: None,
+            probes: None,
         }
     }
 
@@ -40,8 +49,11 @@ impl Place {
     /// read-only and its target folder a room of its own (a tmpfs of
     /// `--disk`'s size), which ends when the last clone of the place is
     /// dropped.
-    pub fn student(copy: &Path) -> Result<Place, String> {
+    pub fn student(copy: &Path, probes: &Path) -> Result<Place, String> {
         let mut place = Place::of(copy);
+        std::fs::create_dir_all(probes)
+            .map_err(|e| format!("cannot create {}: {e}", probes.display()))?;
+        place.probes = Some(probes.to_owned());
         if setup().sandboxed {
             std::fs::create_dir_all(&place.target)
                 .map_err(|e| format!("cannot create {}: {e}", place.target.display()))?;
@@ -59,6 +71,39 @@ impl Place {
         }
     }
 
+    /// The student's build folder, opened once: everything grading reads
+    /// or makes in it after their code ran goes beneath it (`beneath.rs`).
+    pub fn target_folder(&self) -> Result<Folder, String> {
+        Folder::open(&self.outside(&self.target))
+    }
+
+    /// Keeps the probe just built (`target/debug/grade-probe`) as the
+    /// probe of `chapter` (`ch03`), in the grader's own folder, before any
+    /// of the student's code runs; later runs cannot change it.
+    pub fn keep_probe(&self, chapter: &str) -> Result<(), String> {
+        let Some(probes) = &self.probes else {
+            return Ok(());
+        };
+        let by = std::time::Instant::now() + std::time::Duration::from_secs(60);
+        let bytes = (self.target_folder()?)
+            .read(Path::new("debug/grade-probe"), 1 << 30, by)
+            .map_err(|why| format!("the probe just built: {why}"))?;
+        let kept = probes.join(chapter);
+        std::fs::write(&kept, bytes).map_err(|e| format!("cannot keep the probe: {e}"))?;
+        std::fs::set_permissions(&kept, std::os::unix::fs::PermissionsExt::from_mode(0o555))
+            .map_err(|e| format!("cannot keep the probe: {e}"))
+    }
+
+    /// The probe of `chapter` as the runs see it: the one kept, or (the
+    /// reference's base copy) the one built.
+    pub fn probe(&self, chapter: &str) -> PathBuf {
+        match (&self.probes, &self.room) {
+            (None, _) => self.target.join("debug/grade-probe"),
+            (Some(_), Some(_)) => Path::new(PROBES).join(chapter),
+            (Some(kept), None) => kept.join(chapter),
+        }
+    }
+
     /// What the student's limits did, for their result's notes.
     pub fn notes(&self) -> Vec<String> {
         self.room.as_ref().map(|r| r.notes()).unwrap_or_default()
@@ -72,12 +117,23 @@ impl Place {
         args: &[OsString],
         (cwd, extra): (&Path, &[(OsString, OsString)]),
     ) -> Command {
-        let _ = std::fs::create_dir_all(self.outside(&self.scratch));
+        // Beneath the build folder, never through a link the runs left.
+        match &self.room {
+            Some(_) => {
+                if let Ok(target) = self.target_folder() {
+                    target.make_folder("scratch");
+                }
+            }
+            None => {
+                let _ = std::fs::create_dir_all(&self.scratch);
+            }
+        }
         let mut env = small_environment(self);
         env.extend(extra.iter().cloned());
+        let probes = (self.probes.as_deref()).map(|p| (p, Path::new(PROBES)));
         confined(
             (&self.copy, cwd),
-            self.room.as_deref(),
+            (self.room.as_deref(), probes),
             (program, args),
             &env,
         )

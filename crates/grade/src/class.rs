@@ -142,14 +142,14 @@ fn one(
         refused: Some(reason),
         ..StudentResult::default()
     };
-    let submission = match check(class, name, &reference.record) {
+    let mut submission = match check(class, name, &reference.record) {
         Ok(submission) => submission,
         Err(reason) => return (refused(reason), false),
     };
-    let listed = files(&submission.dir, &ignore_rules(&reference.base.copy));
-    let hash = listed.and_then(|l| hash_files(&submission.dir, &l));
-    let hash = match hash {
-        Ok(hash) => hash,
+    let listed = files(&mut submission, &ignore_rules(&reference.base.copy));
+    let hash = listed.and_then(|l| hash_files(&submission, &l).map(|hash| (l, hash)));
+    let (listed, hash) = match hash {
+        Ok(found) => found,
         Err(reason) => return (refused(reason), false),
     };
     let key = format!(
@@ -171,7 +171,7 @@ fn one(
     }
     let work = settings.cache.join("work");
     let mut result = grade(
-        &submission,
+        (&submission, &listed),
         slug,
         reference,
         settings,

@@ -142,7 +142,7 @@ fn check() -> Result<(), String> {
                       && ! test -e ../beside";
         let mut command = sandboxed(
             (&copy, &copy),
-            Some(&room),
+            (Some(&room), None),
             (OsStr::new("sh"), &["-c".into(), script.into()]),
             &[("PATH".into(), "/usr/bin:/bin".into())],
         );
@@ -184,7 +184,7 @@ fn find_program(name: &str) -> Option<PathBuf> {
 /// for the reference's own base copy); else plainly.
 pub fn confined(
     (copy, cwd): (&Path, &Path),
-    room: Option<&Room>,
+    (room, shown): (Option<&Room>, Option<(&Path, &Path)>),
     (program, args): (&OsStr, &[OsString]),
     env: &[(OsString, OsString)],
 ) -> Command {
@@ -194,13 +194,14 @@ pub fn confined(
         command.current_dir(cwd);
         return command;
     }
-    sandboxed((copy, cwd), room, (program, args), env)
+    sandboxed((copy, cwd), (room, shown), (program, args), env)
 }
 
-/// [`confined`], in the sandbox.
+/// [`confined`], in the sandbox: `shown` is a folder of the grader's shown
+/// read-only at a path of the run (the student's probes).
 fn sandboxed(
     (copy, cwd): (&Path, &Path),
-    room: Option<&Room>,
+    (room, shown): (Option<&Room>, Option<(&Path, &Path)>),
     (program, args): (&OsStr, &[OsString]),
     env: &[(OsString, OsString)],
 ) -> Command {
@@ -214,6 +215,9 @@ fn sandboxed(
         None => Command::new("bwrap"),
     };
     command.args(bwrap_args(copy, room.is_some(), env));
+    if let Some((folder, at)) = shown {
+        command.arg("--ro-bind").arg(folder).arg(at);
+    }
     command.arg("--chdir").arg(cwd);
     command.arg("--").arg(program).args(args);
     command.current_dir("/");

@@ -61,7 +61,9 @@ pub fn chapter(
         }
         return verdicts;
     }
-    let built = (run.probe_built.clone()).unwrap_or_else(|| build_probe(place, chapter, settings));
+    // Built and kept before any of the student's code ran (`student.rs`);
+    // never built now, after their tests had their target folder.
+    let built = (run.probe_built.clone()).unwrap_or_else(|| Err("not built".to_owned()));
     if let Err(error) = built {
         for v in &mut probed {
             v.message = Some(format!("the probe of its chapter does not build: {error}"));
@@ -69,14 +71,13 @@ pub fn chapter(
         return verdicts;
     }
     let limits = probe::limits(&settings.test);
+    let binary = place.probe(&probe::feature(chapter));
+    let run_one = |args: [&str; 2]| probe::run_one(place, &binary, args, expected.seed, &limits);
     for v in &mut probed {
-        values(
-            v,
-            probe::run_one(place, ["--exercise", &v.id], expected.seed, &limits),
-            expected,
-        );
+        let outcome = run_one(["--exercise", &v.id]);
+        values(v, outcome, expected);
     }
-    let scenes = probe::run_one(place, ["--scenes", &chapter.folder], expected.seed, &limits);
+    let scenes = run_one(["--scenes", &chapter.folder]);
     let ours = expected
         .scenes
         .get(&chapter.folder)
@@ -85,16 +86,22 @@ pub fn chapter(
     verdicts
 }
 
-/// Builds the grader's probe of `chapter` in `place` (`student.rs` does
-/// it before the student's tests run); the first error if it fails.
+/// Builds the grader's probe of `chapter` in `place` and keeps it where
+/// no later run can change it (`student.rs` does this before the
+/// student's tests run); the first error if it fails.
 pub fn build_probe(
     place: &Place,
     chapter: &ChapterEntry,
     settings: &Settings,
 ) -> Result<(), String> {
-    let features = [probe::feature(chapter)];
-    match probe::build(place, &features, &settings.build, settings.cargo_jobs) {
-        Ok(ran) if ran.success => Ok(()),
+    let feature = probe::feature(chapter);
+    match probe::build(
+        place,
+        std::slice::from_ref(&feature),
+        &settings.build,
+        settings.cargo_jobs,
+    ) {
+        Ok(ran) if ran.success => place.keep_probe(&feature),
         Ok(ran) => Err(first_error(&ran.text)),
         Err(e) => Err(e),
     }

@@ -79,6 +79,7 @@ use ch00_toolkit as toolkit;
 use workbook::{handout, progress, regions, workspace};
 
 mod args;
+mod beneath;
 mod cargo;
 mod cgroup;
 mod class;

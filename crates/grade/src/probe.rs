@@ -8,12 +8,16 @@
 //! made read-only there.
 
 use std::collections::{BTreeMap, BTreeSet};
+use std::io::Read;
+use std::os::fd::{AsRawFd, OwnedFd};
 use std::path::{Path, PathBuf};
+use std::sync::mpsc;
 use std::time::Duration;
 
 use grade_probe::{FORMAT, Picture, Probed, Values};
 use serde::Deserialize;
 
+use super::beneath::clean_line;
 use super::cargo::{Place, cargo_build, test_binary};
 use super::sandbox::{Limits, Ran, run};
 use crate::workspace::PROBE;
@@ -87,27 +91,35 @@ pub fn build(
 /// What one probe run gave: its output, or why there is none.
 pub type Outcome = Result<Probed, String>;
 
-/// Runs the probe built in `place` with `args` (`--exercise ID` or
-/// `--scenes FOLDER`) and `seed`; its output, read back from the copy.
-pub fn run_one(place: &Place, args: [&str; 2], seed: u64, limits: &Limits) -> Outcome {
-    let binary = place.target.join("debug/grade-probe");
-    let folder = place.target.join("probe");
-    // The runs see the copy's target folder at `place.target`; the grader
-    // reaches the same files from outside their namespace.
-    std::fs::create_dir_all(place.outside(&folder)).map_err(|e| e.to_string())?;
-    let out = folder.join(format!("{}.json", args[1]));
-    let read_back = place.outside(&out);
-    if std::fs::symlink_metadata(&read_back).is_ok() {
-        std::fs::remove_file(&read_back)
-            .map_err(|e| format!("cannot clear {}: {e}", read_back.display()))?;
-    }
-    let mut command = test_binary(place, &binary, &place.copy, "");
+/// The descriptor on which a probe run writes its values: the writing end
+/// of a pipe that grading opened and reads, so that no file a student's
+/// code could swap for a link carries them (see `grade-probe --out-fd`).
+const CHANNEL: i32 = 3;
+
+/// Runs the probe `binary` (a path of the run) in `place` with `args`
+/// (`--exercise ID` or `--scenes FOLDER`) and `seed`; its output, read
+/// from the pipe it was handed. The student's code is linked into the
+/// probe and may write to the pipe too: what comes out is checked as data
+/// (the format, the seed, each exercise's id), and a forged record earns
+/// only what its values are worth against the reference's, which never
+/// leave grading's memory.
+pub fn run_one(
+    place: &Place,
+    binary: &Path,
+    args: [&str; 2],
+    seed: u64,
+    limits: &Limits,
+) -> Outcome {
+    let (reader, writer) = std::io::pipe().map_err(|e| format!("cannot make a pipe: {e}"))?;
+    let mut command = test_binary(place, binary, &place.copy, "");
     command
         .args(args)
         .arg("--seed")
         .arg(seed.to_string())
-        .arg("--out")
-        .arg(&out);
+        .arg("--out-fd")
+        .arg(CHANNEL.to_string());
+    hand_over(&mut command, writer.into());
+    let answer = collect(reader);
     let ran = run(command, limits)?;
     if ran.timed_out {
         return Err(format!(
@@ -118,35 +130,76 @@ pub fn run_one(place: &Place, args: [&str; 2], seed: u64, limits: &Limits) -> Ou
     if !ran.success {
         return Err(crashed(&ran.text));
     }
-    read(&read_back, seed)
+    // Every process of the run has ended, so the pipe has no writer left;
+    // unsandboxed, one may have escaped with it: wait a little, not more.
+    let bytes = answer
+        .recv_timeout(Duration::from_secs(5))
+        .map_err(|_| "its output did not end with the run".to_owned())??;
+    read(&bytes, seed)
 }
 
-/// Why a run failed, in a line: the panic's message if it printed one.
+/// Gives the child `fd` as its descriptor [`CHANNEL`] (and closes the
+/// grader's copy when the command is dropped, after it started).
+fn hand_over(command: &mut std::process::Command, fd: OwnedFd) {
+    use std::os::unix::process::CommandExt;
+    // SAFETY: between fork and exec, only dup2 and fcntl (async-signal-
+    // safe), on a descriptor the closure owns.
+    unsafe {
+        command.pre_exec(move || {
+            let raw = fd.as_raw_fd();
+            let done = if raw == CHANNEL {
+                libc::fcntl(raw, libc::F_SETFD, 0)
+            } else {
+                libc::dup2(raw, CHANNEL)
+            };
+            if done < 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+}
+
+/// Reads the pipe's reading end to its end, at most [`MOST`] bytes, in a
+/// thread (a probe's output is larger than a pipe's buffer).
+fn collect(reader: std::io::PipeReader) -> mpsc::Receiver<Result<Vec<u8>, String>> {
+    let (send, receive) = mpsc::channel();
+    std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        let read = reader.take(MOST + 1).read_to_end(&mut bytes);
+        let result = match read {
+            Err(e) => Err(format!("cannot read its output: {e}")),
+            Ok(_) if bytes.len() as u64 > MOST => {
+                Err(format!("its output is larger than {} MiB", MOST >> 20))
+            }
+            Ok(_) => Ok(bytes),
+        };
+        let _ = send.send(result);
+    });
+    receive
+}
+
+/// Why a run failed, in a line: the panic's message if it printed one
+/// (for the teacher's report only: it may hold what the probe was given).
 fn crashed(text: &str) -> String {
     let panic = text
         .lines()
         .skip_while(|l| !l.contains("panicked at"))
         .nth(1);
     match panic {
-        Some(message) => format!("panicked: {}", message.trim()),
+        Some(message) => format!("panicked: {}", clean_line(message.trim())),
         None if text.contains("has overflowed its stack") => "a stack overflow".to_owned(),
         None => "crashed".to_owned(),
     }
 }
 
-/// A probe's output, read as data: a regular file (never a link, FIFO or
-/// device), at most [`MOST`] bytes, in the probe's format, for `seed`.
-pub fn read(path: &Path, seed: u64) -> Outcome {
-    let meta = std::fs::symlink_metadata(path).map_err(|_| "wrote no values".to_owned())?;
-    if !meta.file_type().is_file() {
-        return Err("its output is not a regular file".to_owned());
+/// A probe's output, read as data: in the probe's format, for `seed`.
+pub fn read(bytes: &[u8], seed: u64) -> Outcome {
+    if bytes.is_empty() {
+        return Err("wrote no values".to_owned());
     }
-    if meta.len() > MOST {
-        return Err(format!("its output is larger than {} MiB", MOST >> 20));
-    }
-    let bytes = std::fs::read(path).map_err(|e| format!("cannot read its output: {e}"))?;
-    let probed: Probed = serde_json::from_slice(&bytes)
-        .map_err(|e| format!("its output is not the probe's: {e}"))?;
+    let probed: Probed = serde_json::from_slice(bytes)
+        .map_err(|_| "its output is not the probe's (not its format)".to_owned())?;
     if probed.format != FORMAT || probed.seed != seed {
         return Err("its output is not this run's".to_owned());
     }
@@ -173,6 +226,9 @@ pub fn expected(
     if probed.is_empty() {
         return Ok(expected);
     }
+    // Outputs of an older grader, which wrote the values to files here:
+    // the reference's values now live in this process's memory only.
+    let _ = std::fs::remove_dir_all(base.target.join("probe"));
     let features: Vec<String> = probed.iter().map(|c| feature(c)).collect();
     let built = build(base, &features, limits, jobs)?;
     if !built.success {
@@ -182,7 +238,8 @@ pub fn expected(
             tail.join("\n")
         ));
     }
-    let list = std::process::Command::new(base.target.join("debug/grade-probe"))
+    let binary = base.target.join("debug/grade-probe");
+    let list = std::process::Command::new(&binary)
         .arg("--list")
         .output()
         .map_err(|e| format!("cannot run the reference's probe: {e}"))?;
@@ -195,15 +252,15 @@ pub fn expected(
     let fail = |what: &str, e: String| format!("the reference's probe of {what}: {e}");
     for chapter in probed {
         for id in list.exercises.get(&chapter.folder).into_iter().flatten() {
-            let mut probed =
-                run_one(base, ["--exercise", id], seed, limits).map_err(|e| fail(id, e))?;
+            let mut probed = run_one(base, &binary, ["--exercise", id], seed, limits)
+                .map_err(|e| fail(id, e))?;
             let values = probed
                 .exercises
                 .pop()
                 .ok_or_else(|| fail(id, "no values".into()))?;
             expected.values.insert(id.clone(), values);
         }
-        let probed = run_one(base, ["--scenes", &chapter.folder], seed, limits)
+        let probed = run_one(base, &binary, ["--scenes", &chapter.folder], seed, limits)
             .map_err(|e| fail(&chapter.folder, e))?;
         expected
             .scenes

@@ -10,9 +10,11 @@
 //! Their folder is only read. After their runs, any of the reference's
 //! files in the copy that changed is flagged.
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use super::beneath::{Refused, clean_line, clean_name};
 use super::cargo::{Place, cargo_test};
 use super::outbound;
 use super::outcomes::{Outcomes, name_of, outcomes};
@@ -20,14 +22,14 @@ use super::reference::{Reference, Settings};
 use super::result::{ChapterRun, Picture, StudentResult, Verdict};
 use super::sandbox::{Limits, Ran, run};
 use super::share::copy_keeping_time;
-use super::submission::{Entry, Submission, changes, files, ignore_rules};
+use super::submission::{Entry, Submission, changes};
 use crate::progress::{TestOutput, parse};
 use workbench::chapters::ChapterEntry;
 
 /// Grades `submission` in a copy under `work`, and copies the pictures of
 /// its failures into `pictures` (the report's folder for this student).
 pub fn grade(
-    submission: &Submission,
+    (submission, listed): (&Submission, &BTreeMap<PathBuf, Entry>),
     slug: &str,
     reference: &Reference,
     settings: &Settings,
@@ -40,50 +42,65 @@ pub fn grade(
         warnings: submission.warnings.clone(),
         ..StudentResult::default()
     };
-    let copy = work.join(slug);
+    // The copy, and beside it (in no run's sandbox but as a read-only
+    // mount) the probes kept for it.
+    let (copy, probes) = (work.join(slug), work.join(format!("{slug}.probes")));
     if let Err(e) = grade_in(
-        submission,
-        reference,
-        settings,
-        &copy,
+        (submission, listed),
+        (reference, settings),
+        (&copy, &probes),
         pictures,
         &mut result,
     ) {
         result.refused = Some(e);
     }
     let _ = std::fs::remove_dir_all(&copy);
+    let _ = std::fs::remove_dir_all(&probes);
     result.seconds = start.elapsed().as_secs_f64();
     result
 }
 
 /// [`grade`], in the copy at `copy`.
 fn grade_in(
-    submission: &Submission,
-    reference: &Reference,
-    settings: &Settings,
-    copy: &Path,
+    (submission, listed): (&Submission, &BTreeMap<PathBuf, Entry>),
+    (reference, settings): (&Reference, &Settings),
+    (copy, probes): (&Path, &Path),
     pictures: &Path,
     result: &mut StudentResult,
 ) -> Result<(), String> {
-    let listed = files(&submission.dir, &ignore_rules(&reference.base.copy))?;
-    let changed = changes(&submission.dir, &listed, reference)?;
-    (result.flags, result.notes) = (changed.flags, changed.notes);
+    let changed = changes(submission, listed, reference)?;
+    (result.flags, result.notes) = (submission.flags.clone(), changed.notes);
+    result.flags.extend(changed.flags);
     let theirs: Vec<&PathBuf> = (listed.iter())
-        .filter(|(path, entry)| **entry == Entry::File && reference.is_students(path))
+        .filter(|(path, entry)| matches!(entry, Entry::File(_)) && reference.is_students(path))
         .map(|(path, _)| path)
         .collect();
-    let place = write_copy(reference, &submission.dir, &theirs, copy)?;
+    let place = write_copy(reference, submission, &theirs, (copy, probes))?;
     let target = place.outside(&place.target);
     reference.shared.put(&reference.base.target, &target)?;
     let _ = std::fs::remove_dir_all(pictures);
     result.seed = reference.expected.seed;
+    // First every chapter's build and tests (their messages are the
+    // student's feedback); then the probes, which were built before any of
+    // the student's code ran. So nothing a probe run is given or writes
+    // reaches a run whose output the student sees.
+    let mut runs = Vec::new();
     for chapter in &settings.chapters {
         let probed =
             (reference.exercises_of(&chapter.folder)).any(|e| reference.expected.probes(&e.id));
         let (mut chapter_run, found) = run_chapter(&place, chapter, settings, probed)?;
-        let from_tests = (reference.exercises_of(&chapter.folder))
+        let from_tests: Vec<Verdict> = (reference.exercises_of(&chapter.folder))
             .map(|exercise| judge(exercise, &chapter_run, &found))
             .collect();
+        if chapter_run.compiled {
+            let all = reference.tests.chapters.get(&chapter.folder);
+            let missing = all.map(|t| t.iter().filter(|t| !found.0.contains_key(*t)).count());
+            chapter_run.unfinished = missing.unwrap_or(0);
+        }
+        chapter_run.pictures = keep_pictures(&place, chapter, pictures, &mut result.flags)?;
+        runs.push((chapter, chapter_run, from_tests));
+    }
+    for (chapter, chapter_run, from_tests) in runs {
         let judged = super::judge::chapter(
             &place,
             chapter,
@@ -93,12 +110,6 @@ fn grade_in(
             &result.exercises,
         );
         result.exercises.extend(judged);
-        if chapter_run.compiled {
-            let all = reference.tests.chapters.get(&chapter.folder);
-            let missing = all.map(|t| t.iter().filter(|t| !found.0.contains_key(*t)).count());
-            chapter_run.unfinished = missing.unwrap_or(0);
-        }
-        chapter_run.pictures = keep_pictures(&place, chapter, pictures, &mut result.flags)?;
         result.chapters.push(chapter_run);
     }
     result.notes.extend(place.notes());
@@ -113,9 +124,9 @@ fn grade_in(
 /// folders. Symlinks are never copied; the copy is made fresh.
 fn write_copy(
     reference: &Reference,
-    dir: &Path,
+    submission: &Submission,
     theirs: &[&PathBuf],
-    copy: &Path,
+    (copy, probes): (&Path, &Path),
 ) -> Result<Place, String> {
     if copy.exists() {
         std::fs::remove_dir_all(copy)
@@ -124,31 +135,33 @@ fn write_copy(
     // The reference's files keep the base copy's modification times, so
     // that cargo finds the shared crates built from them fresh (see
     // share.rs); the student's are new files, newer than any build.
-    let copy_one = |from: &Path, to: &Path, keep_time: bool| {
+    let copy_one = |from: &Path, to: &Path| {
         if let Some(parent) = to.parent() {
             std::fs::create_dir_all(parent).map_err(|e| e.to_string())?;
         }
-        let copied = match keep_time {
-            true => copy_keeping_time(from, to),
-            false => std::fs::copy(from, to).map(|_| ()),
-        };
-        copied.map_err(|e| format!("cannot copy {}: {e}", from.display()))
+        copy_keeping_time(from, to).map_err(|e| format!("cannot copy {}: {e}", from.display()))
     };
     for path in reference.files() {
         if !reference.is_students(path) {
-            copy_one(&reference.base.copy.join(path), &copy.join(path), true)?;
+            copy_one(&reference.base.copy.join(path), &copy.join(path))?;
         }
     }
     for path in &reference.probe_files {
         let to = copy.join(path);
-        copy_one(&reference.base.copy.join(path), &to, true)?;
+        copy_one(&reference.base.copy.join(path), &to)?;
         read_only(&to)?;
     }
     for path in theirs {
-        copy_one(&dir.join(path), &copy.join(path), false)?;
+        let to = copy.join(path);
+        if let Some(parent) = to.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| e.to_string())?;
+        }
+        std::fs::write(&to, submission.read(path)?)
+            .map_err(|e| format!("cannot copy {}: {e}", to.display()))?;
     }
     let copy = copy.canonicalize().map_err(|e| e.to_string())?;
-    Place::student(&copy)
+    let _ = std::fs::remove_dir_all(probes);
+    Place::student(&copy, probes)
 }
 
 /// Makes the file at `path` read-only.
@@ -280,51 +293,73 @@ fn judge(exercise: &super::mapping::ExerciseTests, run: &ChapterRun, found: &Fou
 /// Copies the chapter's failure pictures (the three-panel diffs the
 /// snapshot checks write into the copy's target/snapshot-failures/) into
 /// `pictures/<folder>/`; the list of them, relative to the report folder
-/// (`pictures`' parent). Only regular files leave (`outbound.rs`): what
-/// else stands in a picture's place is refused and `flags` say so.
+/// (`pictures`' parent). Everything is read beneath the build folder with
+/// no link on the way (`beneath.rs`): a regular file of a bounded size,
+/// with a clean name, at most [`MOST_PICTURES`] of them, within a time.
+/// What else stands there is refused, and `flags` say so.
 fn keep_pictures(
     place: &Place,
     chapter: &ChapterEntry,
     pictures: &Path,
     flags: &mut Vec<String>,
 ) -> Result<Vec<Picture>, String> {
-    let failures = place.outside(
-        &place
-            .copy
-            .join("target/snapshot-failures")
-            .join(&chapter.folder),
-    );
-    let Ok(entries) = std::fs::read_dir(&failures) else {
-        return Ok(Vec::new());
+    let folder = Path::new("snapshot-failures").join(&chapter.folder);
+    let shown = format!("target/snapshot-failures/{}", chapter.folder);
+    let listed = place
+        .target_folder()?
+        .folder(&folder)
+        .and_then(|f| f.entries());
+    let entries = match listed {
+        Ok(entries) => entries,
+        Err(Refused::Missing) => return Ok(Vec::new()),
+        Err(why) => {
+            flags.push(format!("failure pictures {shown}: {why}"));
+            return Ok(Vec::new());
+        }
     };
-    let mut names: Vec<String> = entries
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter_map(|n| n.strip_suffix(".diff.png").map(str::to_owned))
-        .collect();
-    names.sort();
+    let by = Instant::now() + outbound::MAX_TIME;
     let slug = pictures.file_name().unwrap_or_default().to_string_lossy();
     let mut kept = Vec::new();
-    for name in names {
-        let to = pictures
-            .join(&chapter.folder)
-            .join(format!("{name}.diff.png"));
-        let from = failures.join(format!("{name}.diff.png"));
-        let copied = outbound::copy_out(&from, &to, outbound::MAX_BYTES, outbound::MAX_TIME);
-        if let Err(why) = copied {
+    for (name, _) in entries {
+        let name = name.to_string_lossy();
+        let Some(stem) = name.strip_suffix(".diff.png") else {
+            continue;
+        };
+        if !clean_name(stem) {
             flags.push(format!(
-                "failure picture target/snapshot-failures/{}/{name}.diff.png: {why}",
-                chapter.folder
+                "failure picture in {shown} named {:?}: a control character in its name: refused",
+                clean_line(stem)
             ));
             continue;
         }
-        let diff = format!("{slug}/{}/{name}.diff.png", chapter.folder);
+        if kept.len() == MOST_PICTURES {
+            flags.push(format!(
+                "more than {MOST_PICTURES} failure pictures in {shown}: the rest refused"
+            ));
+            break;
+        }
+        let read = (place.target_folder()?).read(&folder.join(&*name), outbound::MAX_BYTES, by);
+        let bytes = match read {
+            Ok(bytes) => bytes,
+            Err(why) => {
+                flags.push(format!("failure picture {shown}/{name}: {why}"));
+                continue;
+            }
+        };
+        let to = pictures.join(&chapter.folder).join(&*name);
+        outbound::write(&to, &bytes)?;
+        let diff = format!("{slug}/{}/{name}", chapter.folder);
         kept.push(Picture {
-            name,
+            name: stem.to_owned(),
             diff: Some(diff),
         });
     }
     Ok(kept)
 }
+
+/// The most failure pictures a chapter's run may leave (it has a few
+/// snapshot tests).
+const MOST_PICTURES: usize = 32;
 
 #[cfg(test)]
 mod tests {

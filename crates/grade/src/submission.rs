@@ -1,38 +1,81 @@
 //! A student's folder: is it a handout we can grade, what files does it
-//! hold (read without following a symlink), what did the student change
-//! besides their own code, and a hash of it all for the rerun cache.
+//! hold, what did the student change besides their own code, and a hash
+//! of it all for the rerun cache.
 //!
 //! Nothing here writes into the student's folder: it is only listed and
-//! read.
+//! read, and every read goes through one road (`beneath.rs`): beneath the
+//! folder, opened once, with no symlink anywhere on the way, a regular
+//! file only, at most [`MOST_FILE`] bytes a file and [`MOST_TOTAL`] in all,
+//! within [`MOST_TIME`]. A refusal is said in the grader's words, never by
+//! quoting the file.
 
 use std::collections::BTreeMap;
-use std::hash::{Hash, Hasher};
+use std::hash::Hash;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
 
 use ignore::gitignore::{Gitignore, GitignoreBuilder};
 
+use super::beneath::{Folder, Kind, Refused, clean_line};
 use super::digest::Digest;
 use super::reference::Reference;
 use crate::handout::record::{RECORD_FILE, Record};
+
+/// The most grading reads of one file of a student's folder: more than
+/// the largest file of a handout (a scene of a few MiB).
+pub const MOST_FILE: u64 = 16 << 20;
+
+/// The most grading reads of a student's folder in all: a handout is
+/// about 25 MiB.
+pub const MOST_TOTAL: u64 = 256 << 20;
+
+/// The longest reading a student's folder may take.
+pub const MOST_TIME: Duration = Duration::from_secs(120);
+
+/// The most entries a student's folder may hold.
+const MOST_ENTRIES: usize = 100_000;
 
 /// A student folder that can be graded.
 #[derive(Debug, Clone)]
 pub struct Submission {
     /// The folder's name: the student.
     pub name: String,
-    /// The folder.
-    pub dir: PathBuf,
     /// Warnings about it that do not stop grading (another commit).
     pub warnings: Vec<String>,
+    /// What in it grading refused to read (a link, a FIFO, a file too
+    /// large): each is a flag of the student's result.
+    pub flags: Vec<String>,
+    /// The folder, opened once: every read is beneath it.
+    folder: Arc<Folder>,
+    /// When reading it must be done.
+    by: Instant,
 }
 
 /// One entry of a student's folder, relative to it.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Entry {
-    /// A regular file.
-    File,
-    /// A symlink, never followed: where it leads.
-    Link(PathBuf),
+    /// A regular file of this many bytes.
+    File(u64),
+    /// A symlink, never followed.
+    Link,
+    /// A FIFO, a socket, a device: never opened. Its kind, in words.
+    Other(&'static str),
+}
+
+impl Submission {
+    /// The bytes of the student's file `path` (relative to their folder):
+    /// a regular file, no link on the way, at most [`MOST_FILE`] bytes,
+    /// within the folder's time.
+    pub fn read(&self, path: &Path) -> Result<Vec<u8>, String> {
+        (self.folder.read(path, MOST_FILE, self.by))
+            .map_err(|why| format!("{}: {why}", shown(path)))
+    }
+}
+
+/// A path of a student's as grading's messages show it (on one line).
+pub fn shown(path: &Path) -> String {
+    clean_line(&path.to_string_lossy())
 }
 
 /// Checks the entry `name` of the class folder `class`: a folder holding a
@@ -47,25 +90,33 @@ pub fn check(class: &Path, name: &str, reference: &Record) -> Result<Submission,
     if !meta.is_dir() {
         return Err("a file, not a folder: each student's handout is a folder".to_owned());
     }
-    let mut entries = std::fs::read_dir(&dir).map_err(|e| format!("cannot list it: {e}"))?;
-    if entries.next().is_none() {
+    let folder = Folder::open(&dir).map_err(|_| "cannot open it as a folder".to_owned())?;
+    if folder
+        .entries()
+        .map_err(|e| format!("cannot list it: {e}"))?
+        .is_empty()
+    {
         return Err("an empty folder: nothing was handed in".to_owned());
     }
-    if !dir.join("Cargo.toml").is_file() || !dir.join("chapters/chapters.toml").is_file() {
+    let is_file = |p: &str| matches!(folder.kind(Path::new(p)), Ok(Kind::File(_)));
+    if !is_file("Cargo.toml") || !is_file("chapters/chapters.toml") {
         return Err(
             "not a raybook handout: no Cargo.toml and chapters/chapters.toml at its root"
                 .to_owned(),
         );
     }
-    let mut warnings = version_warnings(&dir, reference)?;
-    if super::confine::unsandboxed() {
-        warnings.push(super::confine::UNSANDBOXED.to_owned());
-    }
-    Ok(Submission {
+    let mut submission = Submission {
         name: name.to_owned(),
-        dir,
-        warnings,
-    })
+        warnings: Vec::new(),
+        flags: Vec::new(),
+        folder: Arc::new(folder),
+        by: Instant::now() + MOST_TIME,
+    };
+    version_check(&mut submission, reference)?;
+    if super::confine::unsandboxed() {
+        (submission.warnings).push(super::confine::UNSANDBOXED.to_owned());
+    }
+    Ok(submission)
 }
 
 /// Why a symlinked student folder is not graded: it is never followed.
@@ -79,70 +130,114 @@ fn symlink_refusal(class: &Path, dir: &Path) -> String {
     if inside {
         format!(
             "a symlink to {}: not followed (the folder it leads to is graded under its own name)",
-            leads.display()
+            shown(&leads)
         )
     } else {
         format!(
             "a symlink leading outside the class folder, to {}: never followed",
-            leads.display()
+            shown(&leads)
         )
     }
 }
 
 /// Refuses a handout of another version; warns about one made from another
-/// commit, or that does not say.
-fn version_warnings(dir: &Path, reference: &Record) -> Result<Vec<String>, String> {
-    let Some(record) = Record::read(dir)? else {
-        return Ok(vec![format!(
-            "no {RECORD_FILE}: a handout from before handouts recorded their version; \
-             graded against {}",
-            reference.label()
-        )]);
+/// commit, or that does not say; flags a record that is not one the
+/// `handout` command writes (a link, a FIFO, a device, something else),
+/// which is never quoted, and grades the handout against the reference.
+fn version_check(submission: &mut Submission, reference: &Record) -> Result<(), String> {
+    let record = match submission.read(Path::new(RECORD_FILE)) {
+        Ok(bytes) => std::str::from_utf8(&bytes)
+            .ok()
+            .and_then(|text| toml::from_str::<Record>(text).ok())
+            .ok_or_else(|| format!("{RECORD_FILE}: not a record the handout command writes")),
+        Err(why) => Err(why),
+    };
+    let record = match record {
+        Ok(record) => record,
+        Err(_)
+            if matches!(
+                submission.folder.kind(Path::new(RECORD_FILE)),
+                Err(Refused::Missing)
+            ) =>
+        {
+            submission.warnings.push(format!(
+                "no {RECORD_FILE}: a handout from before handouts recorded their version; \
+                 graded against {}",
+                reference.label()
+            ));
+            return Ok(());
+        }
+        Err(why) => {
+            submission.flags.push(format!(
+                "the handout's record {why}; graded against {}",
+                reference.label()
+            ));
+            return Ok(());
+        }
     };
     if record.version != reference.version {
         return Err(format!(
             "a handout of raybook {} ({RECORD_FILE}), but the reference is {}: \
              grade it with a reference of its version (--reference)",
-            record.version,
+            clean_line(&record.version),
             reference.label()
         ));
     }
     if record.commit != reference.commit {
-        return Ok(vec![format!(
+        submission.warnings.push(format!(
             "made from raybook {}, graded against {}",
-            record.label(),
+            clean_line(&record.label()),
             reference.label()
-        )]);
+        ));
     }
-    Ok(Vec::new())
+    Ok(())
 }
 
 /// The files of a student's folder, relative to it, without following a
 /// symlink: everything but `.git/` and what the reference's `.gitignore`
-/// leaves out (the student's `target/`, snapshot leftovers).
-pub fn files(dir: &Path, ignore: &Gitignore) -> Result<BTreeMap<PathBuf, Entry>, String> {
+/// leaves out (the student's `target/`, snapshot leftovers). A file over
+/// [`MOST_FILE`], and any beyond [`MOST_TOTAL`] in all, are flagged and
+/// left out (never read, never copied).
+pub fn files(
+    submission: &mut Submission,
+    ignore: &Gitignore,
+) -> Result<BTreeMap<PathBuf, Entry>, String> {
+    let skip = |path: &Path, folder: bool| {
+        path.file_name().is_some_and(|n| n == ".git") || ignore.matched(path, folder).is_ignore()
+    };
+    let walked =
+        (submission.folder.walk(&skip, MOST_ENTRIES)).map_err(|why| format!("its files: {why}"))?;
     let mut found = BTreeMap::new();
-    let mut folders = vec![PathBuf::new()];
-    while let Some(folder) = folders.pop() {
-        let path = dir.join(&folder);
-        let entries =
-            std::fs::read_dir(&path).map_err(|e| format!("cannot list {}: {e}", path.display()))?;
-        for entry in entries {
-            let entry = entry.map_err(|e| format!("cannot list {}: {e}", path.display()))?;
-            let relative = folder.join(entry.file_name());
-            let kind = entry.file_type().map_err(|e| format!("{e}"))?;
-            if entry.file_name() == ".git" || ignore.matched(&relative, kind.is_dir()).is_ignore() {
+    let mut total = 0u64;
+    for (path, kind) in walked {
+        let entry = match kind {
+            Kind::File(size) if size > MOST_FILE => {
+                let why = format!(
+                    "{size} bytes, more than the {} MiB a file may hold",
+                    MOST_FILE >> 20
+                );
+                submission
+                    .flags
+                    .push(format!("oversized file {}: {why}: not read", shown(&path)));
                 continue;
             }
-            if kind.is_symlink() {
-                let to = std::fs::read_link(entry.path()).unwrap_or_default();
-                found.insert(relative, Entry::Link(to));
-            } else if kind.is_dir() {
-                folders.push(relative);
-            } else if kind.is_file() {
-                found.insert(relative, Entry::File);
+            Kind::File(size) if total + size > MOST_TOTAL => {
+                submission.flags.push(format!(
+                    "file {} beyond the {} MiB a handout may hold in all: not read",
+                    shown(&path),
+                    MOST_TOTAL >> 20
+                ));
+                continue;
             }
-        }
+            Kind::File(size) => {
+                total += size;
+                Entry::File(size)
+            }
+            Kind::Link => Entry::Link,
+            Kind::Other(what) => Entry::Other(what),
+            Kind::Folder => continue,
+        };
+        found.insert(path, entry);
     }
     Ok(found)
 }
@@ -156,40 +251,25 @@ pub fn ignore_rules(reference_root: &Path) -> Gitignore {
     builder.build().unwrap_or_else(|_| Gitignore::empty())
 }
 
-/// A hash of a student's files (names, contents, where symlinks lead), and
-/// of whether they are graded in the sandbox: the same as at the last run
-/// means nothing changed (and a result graded without the sandbox is never
-/// taken for one graded in it).
-pub fn hash_files(dir: &Path, files: &BTreeMap<PathBuf, Entry>) -> Result<String, String> {
+/// A hash of a student's files (names, contents, and the other entries'
+/// kinds), and of whether they are graded in the sandbox: the same as at
+/// the last run means nothing changed (and a result graded without the
+/// sandbox is never taken for one graded in it).
+pub fn hash_files(
+    submission: &Submission,
+    files: &BTreeMap<PathBuf, Entry>,
+) -> Result<String, String> {
     let mut hasher = Digest::default();
     super::confine::unsandboxed().hash(&mut hasher);
     for (path, entry) in files {
         path.hash(&mut hasher);
         match entry {
-            Entry::File => hash_file(&dir.join(path), &mut hasher)
-                .map_err(|e| format!("cannot read {}: {e}", path.display()))?,
-            Entry::Link(to) => to.hash(&mut hasher),
+            Entry::File(_) => submission.read(path)?.hash(&mut hasher),
+            other => format!("{other:?}").hash(&mut hasher),
         }
     }
+    submission.flags.hash(&mut hasher);
     Ok(hasher.hex())
-}
-
-/// Feeds a file's bytes and length to `hasher`, a piece at a time (a
-/// student's folder may hold a file of gigabytes).
-fn hash_file(path: &Path, hasher: &mut impl Hasher) -> std::io::Result<()> {
-    use std::io::Read;
-    let mut file = std::fs::File::open(path)?;
-    let mut chunk = vec![0u8; 1 << 16];
-    let mut length = 0u64;
-    loop {
-        let n = file.read(&mut chunk)?;
-        if n == 0 {
-            hasher.write_u64(length);
-            return Ok(());
-        }
-        hasher.write(&chunk[..n]);
-        length += n as u64;
-    }
 }
 
 /// What a student changed outside their own code, all of which grading
@@ -205,14 +285,14 @@ pub struct Changes {
 /// Compares the student's files outside their own code with the
 /// reference's.
 pub fn changes(
-    dir: &Path,
+    submission: &Submission,
     files: &BTreeMap<PathBuf, Entry>,
     reference: &Reference,
 ) -> Result<Changes, String> {
     let mut changes = Changes::default();
     let mut reaching = Vec::new();
     let mut note = |path: &Path, what: &str| {
-        let line = format!("{what} {}", path.display());
+        let line = format!("{what} {}", shown(path));
         if is_protected(path) {
             changes.flags.push(line);
         } else {
@@ -220,15 +300,19 @@ pub fn changes(
         }
     };
     for (path, entry) in files {
-        if let Entry::Link(to) = entry {
-            note(
-                path,
-                &format!("symlink (to {}, not followed):", to.display()),
-            );
-            continue;
+        match entry {
+            Entry::Link => {
+                note(path, "symlink (not followed):");
+                continue;
+            }
+            Entry::Other(what) => {
+                reaching.push(format!("{what} at {}: never opened", shown(path)));
+                continue;
+            }
+            Entry::File(_) => {}
         }
         if reference.is_students(path) {
-            reaching.extend(reaching_out(dir, path)?);
+            reaching.extend(reaching_out(submission, path)?);
             continue;
         }
         if path == Path::new(RECORD_FILE) {
@@ -237,11 +321,11 @@ pub fn changes(
         match reference.file(path) {
             None => note(path, "added"),
             Some(_) if path == Path::new("Cargo.lock") => {
-                if !same_lock(&dir.join(path), &root_lock(reference))? {
+                if !same_lock(&submission.read(path)?, &root_lock(reference))? {
                     note(path, "edited")
                 }
             }
-            Some(theirs) if !same_bytes(&dir.join(path), &theirs)? => note(path, "edited"),
+            Some(ours) if !same_bytes(submission, (path, entry), &ours)? => note(path, "edited"),
             Some(_) => {}
         }
     }
@@ -258,7 +342,7 @@ pub fn changes(
 /// (`reach.rs`), or a build setting among their sources (a `build.rs`, a
 /// Cargo file, a `.cargo/config`, a toolchain file: grading builds with
 /// the reference's, but someone tried).
-fn reaching_out(dir: &Path, path: &Path) -> Result<Vec<String>, String> {
+fn reaching_out(submission: &Submission, path: &Path) -> Result<Vec<String>, String> {
     let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
     let setting = matches!(
         name,
@@ -268,14 +352,13 @@ fn reaching_out(dir: &Path, path: &Path) -> Result<Vec<String>, String> {
         return Ok(vec![format!(
             "build setting among the student's sources: {} (not used: the build is the \
              reference's)",
-            path.display()
+            shown(path)
         )]);
     }
     if path.extension().is_none_or(|e| e != "rs") {
         return Ok(Vec::new());
     }
-    let bytes = std::fs::read(dir.join(path))
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let bytes = submission.read(path)?;
     // The chapter's folder: its sources read its README and scenes.
     let folder: PathBuf = path.components().take(2).collect();
     Ok(super::reach::reaching(
@@ -294,27 +377,30 @@ fn root_lock(reference: &Reference) -> PathBuf {
 /// Are two lock files the same but for the teacher's packages (`grade`,
 /// `grade-probe`), which cargo drops from a handout's lock on its first
 /// build, since a handout holds neither?
-fn same_lock(theirs: &Path, reference: &Path) -> Result<bool, String> {
-    let read = |p: &Path| {
-        std::fs::read_to_string(p).map_err(|e| format!("cannot read {}: {e}", p.display()))
-    };
-    let size = std::fs::metadata(theirs).map(|m| m.len()).unwrap_or(0);
-    if size > 4 << 20 {
+fn same_lock(theirs: &[u8], reference: &Path) -> Result<bool, String> {
+    let ours = std::fs::read_to_string(reference)
+        .map_err(|e| format!("cannot read {}: {e}", reference.display()))?;
+    let Ok(theirs) = std::str::from_utf8(theirs) else {
         return Ok(false);
-    }
-    let without = |text: String| workbook::workspace::lock_without_teacher(&text);
-    Ok(without(read(theirs)?) == without(read(reference)?))
+    };
+    let without = workbook::workspace::lock_without_teacher;
+    Ok(without(theirs) == without(&ours))
 }
 
 /// Do the student's file and the reference's hold the same bytes? Sizes
-/// first, so that a huge file is never read.
-fn same_bytes(theirs: &Path, reference: &Path) -> Result<bool, String> {
-    let size = |p: &Path| std::fs::metadata(p).map(|m| m.len()).ok();
-    if size(theirs) != size(reference) {
+/// first, so that a file of another size is never read.
+fn same_bytes(
+    submission: &Submission,
+    (path, entry): (&Path, &Entry),
+    reference: &Path,
+) -> Result<bool, String> {
+    let size = std::fs::metadata(reference).map(|m| m.len()).ok();
+    if size.map(Entry::File).as_ref() != Some(entry) {
         return Ok(false);
     }
-    let read = |p: &Path| std::fs::read(p).map_err(|e| format!("cannot read {}: {e}", p.display()));
-    Ok(read(theirs)? == read(reference)?)
+    let ours = std::fs::read(reference)
+        .map_err(|e| format!("cannot read {}: {e}", reference.display()))?;
+    Ok(submission.read(path)? == ours)
 }
 
 /// Is this one of the files whose edit changes a verdict: a test, a
@@ -367,7 +453,11 @@ mod tests {
         std::fs::write(handout.join("Cargo.toml"), "").unwrap();
         std::fs::write(handout.join("chapters/chapters.toml"), "").unwrap();
         let graded = check(root, "handout", &reference).unwrap();
-        assert!(graded.warnings[0].contains("no .raybook-handout.toml"));
+        assert!(
+            graded.warnings[0].contains("no .raybook-handout.toml"),
+            "{:?}",
+            graded.warnings
+        );
         record("0.1.0", "def").write(&handout).unwrap();
         let graded = check(root, "handout", &reference).unwrap();
         assert!(graded.warnings[0].contains("made from raybook 0.1.0 @ def"));
@@ -421,11 +511,78 @@ mod tests {
         std::fs::write(root.join("chapters/01-rays/src/lib.rs"), "fn f() {}").unwrap();
         std::fs::write(root.join("target/debug/x"), "built").unwrap();
         std::os::unix::fs::symlink("/etc", root.join("chapters/etc")).unwrap();
-        let listed = files(root, &ignore_rules(Path::new("/nonexistent"))).unwrap();
+        std::fs::write(root.join("Cargo.toml"), "").unwrap();
+        std::fs::write(root.join("chapters/chapters.toml"), "").unwrap();
+        let mut submission = check(
+            root.parent().unwrap(),
+            &name_of(root),
+            &record("0.1.0", "abc"),
+        )
+        .unwrap();
+        let listed = files(&mut submission, &ignore_rules(Path::new("/nonexistent"))).unwrap();
         let expected = BTreeMap::from([
-            (PathBuf::from("chapters/01-rays/src/lib.rs"), Entry::File),
-            (PathBuf::from("chapters/etc"), Entry::Link("/etc".into())),
+            (PathBuf::from("Cargo.toml"), Entry::File(0)),
+            (PathBuf::from("chapters/01-rays/src/lib.rs"), Entry::File(9)),
+            (PathBuf::from("chapters/chapters.toml"), Entry::File(0)),
+            (PathBuf::from("chapters/etc"), Entry::Link),
         ]);
         assert_eq!(listed, expected);
+    }
+
+    fn name_of(dir: &Path) -> String {
+        dir.file_name().unwrap().to_string_lossy().into_owned()
+    }
+
+    /// A handout whose record is a link (to a secret, to the terminal, to
+    /// an endless device) is graded, flagged, and the record never quoted
+    /// or waited for; an oversized file and a FIFO are flagged, not read.
+    #[test]
+    fn a_record_or_file_that_is_not_a_plain_file_is_flagged_never_read() {
+        let class = tempfile::tempdir().unwrap();
+        let reference = record("0.1.0", "abc");
+        let secret = class.path().join("secret");
+        std::fs::write(&secret, "version = \"top secret\"").unwrap();
+        for (name, to) in [
+            ("passwd", secret.as_path()),
+            ("stdin", Path::new("/dev/stdin")),
+            ("zero", Path::new("/dev/zero")),
+        ] {
+            let dir = class.path().join(name);
+            std::fs::create_dir_all(dir.join("chapters/01-rays/src")).unwrap();
+            std::fs::write(dir.join("Cargo.toml"), "").unwrap();
+            std::fs::write(dir.join("chapters/chapters.toml"), "").unwrap();
+            std::os::unix::fs::symlink(to, dir.join(RECORD_FILE)).unwrap();
+            let start = Instant::now();
+            let submission = check(class.path(), name, &reference).unwrap();
+            assert!(start.elapsed() < Duration::from_secs(5), "{name}: waited");
+            let flag = submission.flags.join("\n");
+            assert!(
+                flag.contains("a symlink") && !flag.contains("top secret"),
+                "{flag}"
+            );
+        }
+        let dir = class.path().join("zero");
+        let big = std::fs::File::create(dir.join("chapters/01-rays/src/big.bin")).unwrap();
+        big.set_len(1 << 30).unwrap();
+        let fifo = dir.join("chapters/01-rays/src/pipe.rs");
+        let name = std::ffi::CString::new(fifo.as_os_str().as_encoded_bytes()).unwrap();
+        // SAFETY: a valid C string.
+        assert_eq!(unsafe { libc::mkfifo(name.as_ptr(), 0o644) }, 0);
+        let mut submission = check(class.path(), "zero", &reference).unwrap();
+        let listed = files(&mut submission, &ignore_rules(Path::new("/nonexistent"))).unwrap();
+        assert!(!listed.contains_key(Path::new("chapters/01-rays/src/big.bin")));
+        assert_eq!(
+            listed[Path::new("chapters/01-rays/src/pipe.rs")],
+            Entry::Other("a FIFO")
+        );
+        let flags = submission.flags.join("\n");
+        assert!(
+            flags.contains("oversized file chapters/01-rays/src/big.bin"),
+            "{flags}"
+        );
+        assert!(
+            hash_files(&submission, &listed).is_ok(),
+            "the FIFO is never opened"
+        );
     }
 }
