@@ -352,9 +352,9 @@ fn kind_of(mode: u32, size: u64) -> Kind {
 }
 
 /// `text` on one line, as a terminal, a CSV cell or a report may show it:
-/// every control character (a line break, a carriage return, ESC and the
-/// escape sequences it starts) and every bidirectional control (which can
-/// reorder what a reader sees) replaced by `?`.
+/// every control character but a tab (a line break, a carriage return,
+/// ESC and the escape sequences it starts) and every bidirectional control
+/// (which can reorder what a reader sees) replaced by `?`.
 pub fn clean_line(text: &str) -> String {
     text.chars()
         .map(|c| if is_unsafe(c) { '?' } else { c })
@@ -367,9 +367,10 @@ pub fn clean_name(name: &str) -> bool {
     !name.chars().any(is_unsafe)
 }
 
-/// A control character, or a bidirectional formatting character.
-fn is_unsafe(c: char) -> bool {
-    c.is_control()
+/// A control character (not a tab), or a bidirectional formatting
+/// character.
+pub fn is_unsafe(c: char) -> bool {
+    (c.is_control() && c != '\t')
         || matches!(c,
             '\u{200E}' | '\u{200F}' | '\u{061C}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }
@@ -465,5 +466,6 @@ mod tests {
         assert_eq!(clean_line("a\nb\r\u{1b}[2J\u{202E}c"), "a?b??[2J?c");
         assert!(clean_name("default"));
         assert!(!clean_name("de\u{1b}fault") && !clean_name("x\u{2067}"));
+        assert_eq!(clean_line("\t=SUM(1)"), "\t=SUM(1)", "a tab stays");
     }
 }

@@ -8,6 +8,7 @@ use std::time::Duration;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::{Deserialize, Serialize};
 
+use super::beneath::clean_line;
 use super::pool;
 use super::reference::{Reference, Settings};
 use super::report::copy_pictures;
@@ -82,23 +83,42 @@ pub fn grade_class(
     let mut graded = 0;
     let items: Vec<usize> = (0..names.len()).collect();
     let work = |i: usize| {
-        bar.set_message(names[i].clone());
-        let (result, fresh) = one(
-            class,
-            &names[i],
-            &slugs[i],
-            reference,
-            settings,
-            (out, again),
-        );
+        bar.set_message(clean_line(&names[i]));
+        // Whatever goes wrong in one student's grading (a bug of the
+        // grader's their files found), the others are graded and every
+        // output written, with this student marked.
+        let graded = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            one(
+                class,
+                &names[i],
+                &slugs[i],
+                reference,
+                settings,
+                (out, again),
+            )
+        }));
+        let (result, fresh) = graded.unwrap_or_else(|_| {
+            let result = StudentResult {
+                name: names[i].clone(),
+                slug: slugs[i].clone(),
+                refused: Some(
+                    "grading failed on this folder (an error of the grader's, \
+                     reported to the teacher); the others were graded"
+                        .to_owned(),
+                ),
+                ..StudentResult::default()
+            };
+            (result, true)
+        });
         (i, result, fresh)
     };
     pool::for_each(items, settings.jobs, work, |(i, result, fresh)| {
         graded += usize::from(fresh);
+        let name = clean_line(&result.name);
         let verdict = match (&result.refused, fresh) {
-            (Some(reason), _) => format!("{}: not graded: {reason}", result.name),
-            (None, true) => format!("{}: graded in {:.0} s", result.name, result.seconds),
-            (None, false) => format!("{}: unchanged since the last run", result.name),
+            (Some(reason), _) => format!("{name}: not graded: {}", clean_line(reason)),
+            (None, true) => format!("{name}: graded in {:.0} s", result.seconds),
+            (None, false) => format!("{name}: unchanged since the last run"),
         };
         // A hidden bar (output not a terminal) prints nothing: say it anyway.
         if bar.is_hidden() {

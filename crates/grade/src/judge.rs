@@ -31,6 +31,7 @@ use grade_probe::{Picture, first_disagreement};
 use workbench::chapters::ChapterEntry;
 use workbench::compare::{Tolerance, Verdict as Compared, compare};
 
+use super::beneath::{Kind, clean_line};
 use super::cargo::Place;
 use super::probe::{self, Expected};
 use super::reference::{Reference, Settings};
@@ -240,6 +241,75 @@ pub fn picture_problem(scene: &Picture, theirs: Option<&Picture>) -> Option<Stri
 fn first_error(text: &str) -> String {
     let line = (text.lines()).find(|l| l.starts_with("error"));
     line.unwrap_or("the build failed").to_owned()
+}
+
+/// What the teacher should look at, though no verdict changes: an
+/// exercise whose values agree with the reference's while its own tests
+/// reach its `todo!` (or say it is not done), as code that knows when it
+/// is graded would; a chapter whose tests never finished.
+pub fn contradictions(verdicts: &[Verdict], runs: &[ChapterRun]) -> Vec<String> {
+    let mut flags = Vec::new();
+    for v in verdicts
+        .iter()
+        .filter(|v| v.passed && v.judged_by == JUDGED_BY_VALUES)
+    {
+        let feedback = v.feedback.as_deref().unwrap_or("");
+        let todo = feedback.contains(&format!("not yet implemented: {}", v.id));
+        if todo || feedback.contains("not done") {
+            flags.push(format!(
+                "{}: its values agree with the reference's, yet its tests say it is not \
+                 written: code that behaves otherwise when graded?",
+                v.id
+            ));
+        }
+    }
+    for run in runs {
+        let never = run.unfinished > 0
+            || run
+                .trouble
+                .as_ref()
+                .is_some_and(|t| t.contains("timed out"));
+        if never && run.compiled {
+            flags.push(format!("{}: its tests never finished", run.folder));
+        }
+    }
+    flags
+}
+
+/// What the student's runs left in their build folder that no build or
+/// test writes: a symlink (a folder swapped for a link), a FIFO, a socket,
+/// a device, a cargo setting. Each is a flag: the run touched more than
+/// its chapters' sources and their build. Walked beneath the folder, no
+/// link followed (`beneath.rs`).
+pub fn touched(place: &Place) -> Vec<String> {
+    let walked = place
+        .target_folder()
+        .map_err(|e| e.to_string())
+        .and_then(|folder| folder.walk(&|_, _| false, 1_000_000));
+    let entries = match walked {
+        Ok(entries) => entries,
+        Err(why) => {
+            return vec![format!(
+                "its build folder could not be looked through: {why}"
+            )];
+        }
+    };
+    let mut flags = Vec::new();
+    for (path, kind) in entries {
+        let shown = format!("target/{}", clean_line(&path.to_string_lossy()));
+        let setting = path.components().any(|c| c.as_os_str() == ".cargo");
+        match kind {
+            Kind::Link => flags.push(format!("its run left a symlink at {shown}")),
+            Kind::Other(what) => flags.push(format!("its run left {what} at {shown}")),
+            _ if setting => flags.push(format!("its run wrote a cargo setting at {shown}")),
+            _ => {}
+        }
+        if flags.len() >= 20 {
+            flags.push("and more".to_owned());
+            break;
+        }
+    }
+    flags
 }
 
 /// The reference's files in `copy` (the tests, pictures, Cargo files and the

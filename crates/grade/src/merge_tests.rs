@@ -192,3 +192,45 @@ fn only_pictures_that_are_files_of_the_students_folder_are_copied() {
     });
     assert!(copied(from.path()).is_err(), "a symlink is refused");
 }
+
+/// Makes a file of some kind at a path.
+type MakeFile = fn(&Path);
+
+/// A slice that is a link (to a terminal, to a device that never ends) or
+/// a FIFO is refused at once and never quoted; one whose names hold line
+/// breaks and escapes merges, and the outputs show them on one line.
+#[test]
+fn a_hostile_slice_is_refused_without_waiting_or_quoting() {
+    let makers: [(&str, MakeFile); 3] = [
+        ("stdin", |p: &Path| {
+            std::os::unix::fs::symlink("/dev/stdin", p).unwrap()
+        }),
+        ("zero", |p: &Path| {
+            std::os::unix::fs::symlink("/dev/zero", p).unwrap()
+        }),
+        ("fifo", |p: &Path| {
+            let name = std::ffi::CString::new(p.as_os_str().as_encoded_bytes()).unwrap();
+            // SAFETY: a valid C string.
+            assert_eq!(unsafe { libc::mkfifo(name.as_ptr(), 0o644) }, 0);
+        }),
+    ];
+    for (name, make) in makers {
+        let dir = tempfile::tempdir().unwrap();
+        slice(dir.path(), 1, 2, |_| {});
+        make(&dir.path().join("shard-2-of-2.json"));
+        let start = std::time::Instant::now();
+        let error = merged(&[dir.path()]).unwrap_err();
+        assert!(start.elapsed().as_secs() < 5, "{name}: it waited");
+        assert!(
+            error.contains("refused") || error.contains("never followed"),
+            "{name}: {error}"
+        );
+    }
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("shard-1-of-1.json"), "root:x:0:0:secret").unwrap();
+    let error = merged(&[dir.path()]).unwrap_err();
+    assert!(
+        error.contains("not a slice") && !error.contains("secret"),
+        "{error}"
+    );
+}

@@ -4,6 +4,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::beneath::clean_line;
+
 /// One student's grading.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct StudentResult {
@@ -115,6 +117,39 @@ impl Verdict {
             text.push_str(&format!("; the chapter's tests say: {feedback}"));
         }
         text
+    }
+}
+
+impl Verdict {
+    /// What the student is told (Gradescope): why it earns its points or
+    /// not, without what the teacher keeps. Nothing of the probe's run
+    /// reaches a student: not the seed, not a drawn input, not the
+    /// reference's value (with which a table of answers could be built
+    /// over resubmissions), not a path or what the probe printed. Their
+    /// chapter's tests' message, which names the mistake, is theirs.
+    pub fn for_student(&self) -> String {
+        let mut text = if self.judged_by == JUDGED_BY_TESTS || self.passed {
+            return clean_line(&self.explained());
+        } else if let Some(d) = &self.disagreement {
+            format!(
+                "disagrees with the reference on drawn input {} of {} (the inputs are drawn \
+                 afresh at each grading and stay with the teacher)",
+                d.case, self.cases
+            )
+        } else {
+            match self.message.as_deref().unwrap_or("fails") {
+                m if m.starts_with("no values: its probe panicked") => {
+                    "no values: your code panicked when the grader called it (your chapter's \
+                     tests show your own panics)"
+                        .to_owned()
+                }
+                m => m.to_owned(),
+            }
+        };
+        if let Some(feedback) = &self.feedback {
+            text.push_str(&format!("; the chapter's tests say: {feedback}"));
+        }
+        clean_line(&text)
     }
 }
 

@@ -112,7 +112,10 @@ fn grade_in(
         result.exercises.extend(judged);
         result.chapters.push(chapter_run);
     }
+    result.flags.extend(super::judge::touched(&place));
     result.notes.extend(place.notes());
+    let contradictions = super::judge::contradictions(&result.exercises, &result.chapters);
+    result.flags.extend(contradictions);
     result
         .flags
         .extend(super::judge::tampered(&place.copy, reference));

@@ -98,6 +98,8 @@ fn line(cells: &[String]) -> String {
 /// formula (some strip a leading tab or carriage return, then read what
 /// follows as one: OWASP's "CSV injection").
 fn field(cell: &str) -> String {
+    // One line a cell, whatever a name or a reason holds.
+    let cell = &crate::beneath::clean_line(cell);
     let cell = if cell.starts_with(['=', '+', '-', '@', '\t', '\r']) {
         format!("'{cell}")
     } else {
@@ -120,9 +122,14 @@ mod tests {
         assert_eq!(field("a,b"), "\"a,b\"");
         assert_eq!(field("say \"hi\""), "\"say \"\"hi\"\"\"");
         assert_eq!(field("=SUM(A1)"), "'=SUM(A1)");
-        assert_eq!(line(&["a".into(), "b\nc".into()]), "a,\"b\nc\"\r\n");
+        assert_eq!(line(&["a".into(), "b\nc".into()]), "a,b?c\r\n", "one line");
         assert_eq!(field("\t=1+2"), "'\t=1+2");
-        assert_eq!(field("\r=cmd"), "\"'\r=cmd\"");
+        assert_eq!(field("\r=cmd"), "?=cmd");
+        assert_eq!(
+            field("x\nzz-fake,3,3"),
+            "\"x?zz-fake,3,3\"",
+            "no forged row"
+        );
         assert_eq!(field("a\tb"), "a\tb", "a tab inside is left alone");
     }
 }

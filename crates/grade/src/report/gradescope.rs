@@ -6,6 +6,7 @@
 use serde_json::{Value, json};
 
 use super::Class;
+use crate::beneath::clean_line;
 use crate::result::StudentResult;
 
 /// The `results.json` text of `student`.
@@ -18,7 +19,7 @@ pub fn results_json(class: &Class, student: &StudentResult) -> String {
             let passed = verdict.is_some_and(|v| v.passed);
             let max = class.points.of(&exercise.id);
             let output = match verdict.filter(|v| v.message.is_some()) {
-                Some(v) => v.explained(),
+                Some(v) => v.for_student(),
                 None if passed => match exercise.tests.len() {
                     1 => "passes the test that grades it".to_owned(),
                     n => format!("passes the {n} tests that grade it"),
@@ -35,6 +36,18 @@ pub fn results_json(class: &Class, student: &StudentResult) -> String {
                 "visibility": "visible",
             }));
         }
+    }
+    if let Some(reason) = &student.refused {
+        // Shown to the student, so that they know to hand in again.
+        let (_, max) = class.score(student);
+        tests.push(json!({
+            "name": "grading",
+            "score": 0.0,
+            "max_score": max,
+            "status": "failed",
+            "output": format!("Not graded: {}", clean_line(reason)),
+            "visibility": "visible",
+        }));
     }
     let results = json!({
         "score": score,
@@ -58,7 +71,7 @@ fn summary(class: &Class, student: &StudentResult) -> String {
         );
     }
     if let Some(reason) = &student.refused {
-        lines.push(format!("Not graded: {reason}"));
+        lines.push(format!("Not graded: {}", clean_line(reason)));
     }
     for trouble in student.troubles() {
         lines.push(format!("Chapter {trouble}"));
@@ -69,8 +82,8 @@ fn summary(class: &Class, student: &StudentResult) -> String {
              reference's):"
                 .to_owned(),
         );
-        lines.extend(student.flags.iter().map(|f| format!("  {f}")));
+        lines.extend(student.flags.iter().map(|f| format!("  {}", clean_line(f))));
     }
-    lines.extend(student.warnings.iter().cloned());
+    lines.extend(student.warnings.iter().map(|w| clean_line(w)));
     lines.join("\n")
 }

@@ -105,6 +105,8 @@ pub fn escape(text: &str) -> String {
             '\n' => out.push_str("&#10;"),
             '\t' | '\r' => out.push(' '),
             c if (c as u32) < 0x20 || c == '\u{fffe}' || c == '\u{ffff}' => {}
+            // A bidirectional control reorders what the reader sees.
+            c if crate::beneath::is_unsafe(c) => out.push('?'),
             c => out.push(c),
         }
     }

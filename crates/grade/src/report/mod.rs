@@ -10,6 +10,7 @@ mod junit;
 
 use std::path::{Path, PathBuf};
 
+use super::beneath::clean_line;
 use super::points::Points;
 use super::reference::Reference;
 use super::result::StudentResult;
@@ -84,7 +85,7 @@ pub fn print_table(class: &Class) {
         let flags = student.flags.len();
         println!(
             "{:<24} {score:>9}  {compiled:<8}  {flags:<5}  {time:>6}",
-            student.name
+            clean_line(&student.name)
         );
     }
 }
