@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use super::shard;
+use crate::class::shard;
 
 /// `grade`: grades a class of handouts against the reference.
 #[derive(clap::Args, Debug, Clone)]

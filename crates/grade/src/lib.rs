@@ -6,122 +6,49 @@
 //! whether it compiled. An exercise passes when the values the student's
 //! function computed on inputs drawn from a seed agree with the
 //! reference's, judged outside the sandbox, and its chapter's seeded
-//! scenes agree too (`judge.rs` states the rule, `probe.rs` runs the
-//! teacher's probe, `crates/grade-probe`); the chapters' tests run for the
-//! feedback their messages give, and decide only an exercise no probe
-//! covers (`mapping.rs`). The seed is drawn at grading time and kept in the
-//! output folder, never in a handout. Outputs (`report/`): a CSV
-//! gradebook, a Gradescope `results.json` per student, JUnit XML, an HTML
-//! class report.
+//! scenes agree too; the chapters' tests run for the feedback their
+//! messages give. The seed is drawn at grading time and kept in the output
+//! folder, never in a handout.
 //!
-//! Student code is untrusted. What grading does about it:
-//! * it runs in a fresh copy, never in the student's folder, which is only
-//!   read (`submission.rs`, `student.rs`), and symlinks are never followed;
-//! * the copy holds the reference's files but for the student's own
-//!   folders (each exercise chapter's `src/`): the tests, pictures,
-//!   manifest, Cargo files and lock file are the reference's, and no build
-//!   script of the student's is there; edits to them are flagged, and so
-//!   are sources that reach outside their chapter (`#[path]`, `include!`
-//!   and its kin: `reach.rs`) and build settings among their sources;
-//! * every build and test run is in bubblewrap (`confine.rs`): an empty
-//!   root holding the toolchain and registry sources read-only, the copy
-//!   read-only, and its `target/` writable, a size-limited file system of
-//!   the student's own; every namespace its own (no network, no host
-//!   sockets, a PID namespace whose processes all end with the run); the
-//!   student's processes together in a control group bounding their
-//!   memory and number where the system allows one (`cgroup.rs`); cargo
-//!   `--offline`, with a small environment. Where the sandbox cannot
-//!   start, grading refuses to, unless the teacher says
-//!   `--unsafe-no-sandbox`, which every output then shows;
-//! * each run is killed at its time limit, under limits on address space,
-//!   file size and core dumps, with a cap on what it prints (`sandbox.rs`);
-//!   what stopped a run is recorded and the next one starts; Ctrl-C ends
-//!   them too;
-//! * the shared build artefacts are copies in the student's own target
-//!   folder, never links to the base build or the teacher's (`share.rs`);
-//! * what leaves the sandbox is checked: failure pictures are copied out
-//!   only if they are regular files, of a bounded size, read within a
-//!   time (`outbound.rs`); anything else in their place is refused and
-//!   flagged.
+//! The grader's parts, by concern. None imports another in a circle:
+//! each uses only the parts above it in this table.
 //!
-//! What the design still trusts, and why that is acceptable:
-//! * the kernel and bubblewrap: a student who escapes a user namespace has
-//!   a kernel exploit, which no grader stops; bubblewrap is small, audited
-//!   and what every Flatpak application runs in, and distributions ship
-//!   its fixes. A teacher who grades strangers (a MOOC) should still run
-//!   `grade` in a throwaway virtual machine or account, as Gradescope does;
-//! * the toolchain and the registry sources, which the students' code may
-//!   read (they are public, and read-only in the sandbox), and rustc and
-//!   the linker, which run on the student's source: a compiler bug that
-//!   runs code at compile time runs it inside the same sandbox;
-//! * the students' own copies: within its run, a student's code may write
-//!   its own `target/` (its own build, its own failure pictures), so what
-//!   the tests print and write is theirs to forge. Points therefore come
-//!   not from a student's own report of itself but from the values its
-//!   code computed on inputs it never saw, judged outside the sandbox
-//!   (`judge.rs`); the pictures leave only through `outbound.rs`. An
-//!   exercise that no probe covers yet is still judged by its tests, which
-//!   a student can forge: every exercise of chapters 1 to 7 is probed, so
-//!   none is left, but a new exercise is until its probe is written;
-//! * the CPU: nothing but the time limits bounds a student's CPU time, and
-//!   students graded side by side share the cores (a slow neighbour costs
-//!   time, never points, since no verdict depends on speed);
-//! * on cgroup v1 without a group the grader may make (an unprivileged
-//!   teacher), the memory of a student's processes is bounded one process
-//!   at a time (`--memory` of address space each) and their number only by
-//!   the time limit; grading says so when it starts. `cgroup.rs` says how
-//!   to bound them on a cgroup-v2 system;
-//! * with `--unsafe-no-sandbox`, everything: the code runs as the teacher,
-//!   reads and writes what the teacher can and reaches the network. It is
-//!   for a class one trusts, and every output says it was used.
+//! | part        | what it holds |
+//! |-------------|---------------|
+//! | `sandbox/`  | where a student's code runs and what may leave it: bubblewrap (`bwrap.rs`), the student's build folder (`build_folder.rs`), control groups (`cgroup.rs`), limits on a run (`limits.rs`), reading beneath a folder (`beneath.rs`), the failure pictures (`outbound.rs`); **the trust model** is its `mod.rs` |
+//! | `build/`    | cargo in a copy (`cargo.rs`), the build artefacts students share (`share.rs`), a digest |
+//! | `judging/`  | what a student is judged against, and how: the reference (`reference.rs`), the probe (`probe.rs`), the rule (`rule.rs`), the tests of each exercise (`exercise_tests.rs`) and their outcomes, the verdicts (`verdict.rs`) |
+//! | `report/`   | the outputs: the CSV gradebook, a Gradescope `results.json` per student, JUnit XML, the HTML report, the points |
+//! | `class/`    | the students: a folder read (`submission.rs`), one graded (`student.rs`), in slices and merged (`shard.rs`, `merge.rs`), sources that reach outside (`source_paths.rs`) |
+//!
+//! Beside them, `args.rs` (the command line) and `pool.rs` (work side by
+//! side: the students, the reference's runs).
 
 use ch00_toolkit as toolkit;
-use workbook::{handout, progress, regions, workspace};
 
 mod args;
-mod beneath;
-mod cargo;
-mod cgroup;
+mod build;
 mod class;
-mod confine;
-mod digest;
-mod judge;
-mod mapping;
-mod merge;
-mod outbound;
-mod outcomes;
-mod points;
+mod judging;
 mod pool;
-mod probe;
-mod reach;
-mod reference;
 mod report;
-mod result;
-mod room;
 mod sandbox;
-mod shard;
-mod share;
-mod student;
-mod submission;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use reference::{Reference, Settings};
-use sandbox::Limits;
+use judging::probe;
+use judging::reference::{Reference, Settings};
+use sandbox::bwrap::Setup;
+use sandbox::limits::Limits;
 use workbench::chapters::{self, ChapterEntry};
 use workbook::workspace::current_workspace;
 
 pub use args::GradeArgs;
 /// The grader's rule for a seeded scene (the probe's mistakes check uses it).
-pub use judge::picture_problem;
-pub use result::{ChapterRun, StudentResult, Verdict};
-
-/// The version of what grading caches (the tests of each exercise, each
-/// student's result): a new one when what they mean changes, so that a
-/// cache of an older workbook is never read as this one's.
-const CACHE_FORMAT: &str = "grade-cache-2";
+pub use judging::rule::picture_problem;
+pub use judging::verdict::{ChapterRun, StudentResult, Verdict};
 
 /// Runs `grade`.
 pub fn main(args: &GradeArgs) -> ExitCode {
@@ -150,11 +77,11 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     std::fs::create_dir_all(&out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let out = out.canonicalize().map_err(|e| e.to_string())?;
     if !args.merge.is_empty() {
-        return merge::main(args, &root, &out);
+        return class::merge::main(args, &root, &out);
     }
     let (class, names) = students(args)?;
-    let settings = settings(args, &out, &class)?;
-    sandbox_setup(args)?;
+    let sandbox = sandbox_setup(args)?;
+    let settings = settings(args, &out, &class, sandbox)?;
     let seed_file = out.join("seed.txt");
     toolkit::image::write_atomically(&seed_file, format!("{}\n", settings.seed).as_bytes())
         .map_err(|e| format!("cannot write {}: {e}", seed_file.display()))?;
@@ -176,7 +103,7 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     );
     let took = start.elapsed();
     let ids: Vec<_> = reference.tests.exercises.clone();
-    let points = points::Points::load(args.points.as_deref(), &out, &ids)?;
+    let points = report::points::Points::load(args.points.as_deref(), &out, &ids)?;
     let class_outputs = report::Class {
         reference: &reference,
         points: &points,
@@ -184,13 +111,13 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
     };
     let written = match args.shard {
         Some(shard) => {
-            let graded_with = shard::graded_with(&reference, &settings, names.clone());
-            let file = shard::ShardFile {
+            let graded_with = class::shard::graded_with(&reference, &settings, names.clone());
+            let file = class::shard::ShardFile {
                 shard,
                 graded_with,
                 students: results.clone(),
             };
-            vec![shard::write(&out, &file)?]
+            vec![class::shard::write(&out, &file)?]
         }
         None => report::write_all(&out, &class_outputs)?,
     };
@@ -217,22 +144,22 @@ fn grade(args: &GradeArgs) -> Result<(), String> {
 
 /// Starts the students' sandbox (or refuses to grade, saying why), and
 /// says what bounds a student.
-fn sandbox_setup(args: &GradeArgs) -> Result<(), String> {
-    let setup = confine::start(
+fn sandbox_setup(args: &GradeArgs) -> Result<Setup, String> {
+    let setup = sandbox::bwrap::start(
         !args.unsafe_no_sandbox,
         args.disk << 20,
         args.memory << 20,
         PROCESSES,
     )?;
     if !setup.sandboxed {
-        eprintln!("WARNING: {}", confine::UNSANDBOXED);
+        eprintln!("WARNING: {}", sandbox::bwrap::UNSANDBOXED);
     } else if let Err(why) = &setup.cgroups {
         eprintln!(
             "note: no control group per student here ({why}): each process is held to \
              --memory alone, and the number of processes only by the time limit"
         );
     }
-    Ok(())
+    Ok(setup)
 }
 
 /// Processes and threads a student may have at once (with a control group).
@@ -264,7 +191,12 @@ fn students(args: &GradeArgs) -> Result<(PathBuf, Vec<String>), String> {
 }
 
 /// The settings the arguments give.
-fn settings(args: &GradeArgs, out: &Path, class: &Path) -> Result<Settings, String> {
+fn settings(
+    args: &GradeArgs,
+    out: &Path,
+    class: &Path,
+    sandbox: Setup,
+) -> Result<Settings, String> {
     if let (Some(shard), None) = (&args.shard, args.seed) {
         return Err(format!(
             "--shard {shard}: every slice must judge on the same inputs; give each the same \
@@ -297,6 +229,7 @@ fn settings(args: &GradeArgs, out: &Path, class: &Path) -> Result<Settings, Stri
             Some(_) => probe::seed(args.seed, None),
             None => probe::seed(args.seed, Some(&out.join("seed.txt"))),
         },
+        sandbox: std::sync::Arc::new(sandbox),
     })
 }
 

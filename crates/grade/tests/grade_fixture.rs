@@ -4,7 +4,7 @@
 //! test's reference still while others edit the workspace.)
 //!
 //! Points come from the values each exercise's code computed on inputs
-//! drawn from a seed (the probe; `judge.rs` states the rule), so each
+//! drawn from a seed (the probe; `judging/rule.rs` states the rule), so each
 //! student gets exactly what their honest work earns:
 //!
 //! | folder          | what it is                                   | expected row                         |
@@ -287,6 +287,10 @@ fn check_rows(rows: &std::collections::BTreeMap<String, Row>) {
     );
     assert_eq!(endless["ch03-lambert"], "0");
     assert!(endless["why"].contains("ch03-lambert: no values: its probe timed out"));
+    assert!(
+        endless["flags"].contains("03-lambert: its tests never finished"),
+        "the teacher is told: {endless:?}"
+    );
     assert!(
         endless["troubles"].contains("03-lambert: the tests timed out"),
         "{endless:?}"

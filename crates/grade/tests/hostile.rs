@@ -8,6 +8,14 @@
 //! | `b-reacher`  | none        | `#[path = "/…"]` to the reference's solution, `include_str!` of another student's file | 0/3 (does not compile), flagged |
 //! | `c-hogs`     | none        | files together over its disk; six children together over its memory | 0/3, both limits noted |
 //! | `\t=SUM(1)`  | chapter 1   | its name: a CSV cell that begins with a tab              | 3/3, the cell neutralised |
+//! | `d-swapper`  | none        | in the probe: `target/probe` swapped for a link to the base copy's outputs, `snapshot-failures/01-rays` for a link to a teacher's folder, a picture named with escapes; a forged record on the pipe, then exit 0 | 0/3, the links flagged, nothing read through them |
+//! | `e-record-secret` | chapter 1 | `.raybook-handout.toml` a link to a teacher's secret; a 1 GiB sparse file in `src/` | 3/3, both flagged, the secret never quoted |
+//! | `f-record-stdin` | chapter 1 | the record a link to `/dev/stdin`; a FIFO in `src/` | 3/3, flagged, the class never waits |
+//! | `g-record-zero` | chapter 1 | the record a link to `/dev/zero` | 3/3, flagged, nothing read |
+//! | `h-panicker` | chapter 1   | in the probe, `at` panics with the probe's arguments (the seed); in its tests, a failure picture named with ESC and CR | 2/3, nothing of the probe in its Gradescope output, the picture refused |
+//! | `i-new⏎zz-fake,3,3` | none | its name a line break and a forged row; a file named with ESC and CR | 0/3, one line everywhere |
+//! | `j-early`    | chapter 1   | an `.init_array` constructor that forges a record on the pipe before `main`, and a `#[global_allocator]` of its own | 0/3 (the forged values are worth nothing), no crash |
+//! | `k-settings` | chapter 1   | `[patch]` in the Cargo.toml, a proc-macro crate added, `#[no_mangle] main` replacing the entry point | 0/3 (the link fails: a second `main`), flagged |
 //! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
 //!
 //! Nothing outside the students' copies may change: the reference, the
@@ -101,6 +109,9 @@ fn grade_the_class() -> Graded {
     std::fs::write(teacher_deps.join("raybook-hostile-canary"), "the teacher's").unwrap();
     let secret = format!("a secret of the teacher's, {}", std::process::id());
     std::fs::write(base.join("secret.txt"), &secret).unwrap();
+    let teacher_pictures = base.join("teacher-pictures");
+    std::fs::create_dir_all(&teacher_pictures).unwrap();
+    std::fs::write(teacher_pictures.join("default.diff.png"), &secret).unwrap();
     let (heard, socket, abstract_name) = listen(&base);
     let places = [
         ("@SOCKET@", socket.display().to_string()),
@@ -113,6 +124,11 @@ fn grade_the_class() -> Graded {
         ),
         ("@TEACHER_DEPS@", teacher_deps.display().to_string()),
         ("@SECRET@", base.join("secret.txt").display().to_string()),
+        (
+            "@BASE_PROBE@",
+            out.join(".cache/base/target/probe").display().to_string(),
+        ),
+        ("@TEACHER_PICTURES@", teacher_pictures.display().to_string()),
     ];
     make_class(&reference, &class, &places);
 
@@ -121,6 +137,7 @@ fn grade_the_class() -> Graded {
         ("the class", class.clone()),
         ("the base build", out.join(".cache/base/target/debug/deps")),
         ("the base copy's sources", out.join(".cache/base/chapters")),
+        ("the teacher's pictures", teacher_pictures.clone()),
     ];
     let before: Vec<Vec<String>> = watched.iter().map(|(_, p)| class_fingerprint(p)).collect();
     let teacher_before = shallow_fingerprint(&teacher_deps);
@@ -267,6 +284,116 @@ fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
 
     student("\t=SUM(1)", 1);
     student("zz-honest", 1);
+    attacker(&student("d-swapper", 0), "swapper", false);
+    attacker(&student("h-panicker", 1), "panicker", true);
+
+    let record = |dir: &Path, to: &Path| {
+        let at = dir.join(".raybook-handout.toml");
+        std::fs::remove_file(&at).unwrap();
+        std::os::unix::fs::symlink(to, at).unwrap();
+    };
+    let secret = student("e-record-secret", 1);
+    record(
+        &secret,
+        Path::new(&places.iter().find(|p| p.0 == "@SECRET@").unwrap().1),
+    );
+    let big = std::fs::File::create(secret.join("chapters/01-rays/src/big.bin")).unwrap();
+    big.set_len(1 << 30).unwrap();
+    let stdin = student("f-record-stdin", 1);
+    record(&stdin, Path::new("/dev/stdin"));
+    let fifo = stdin.join("chapters/01-rays/src/pipe.rs");
+    let name = std::ffi::CString::new(fifo.as_os_str().as_encoded_bytes()).unwrap();
+    // SAFETY: a valid C string.
+    assert_eq!(unsafe { libc::mkfifo(name.as_ptr(), 0o644) }, 0);
+    record(&student("g-record-zero", 1), Path::new("/dev/zero"));
+
+    let newline = student(NEWLINE, 0);
+    std::fs::write(newline.join("chapters/01-rays/\u{1b}[31mred\rnote.md"), "x").unwrap();
+
+    let early = student("j-early", 1);
+    append(&early.join("chapters/01-rays/src/lib.rs"), EARLY);
+    let settings = student("k-settings", 1);
+    append(&settings.join("chapters/01-rays/src/lib.rs"), ENTRY);
+    append(
+        &settings.join("Cargo.toml"),
+        "\n[patch.crates-io]\nglam = { path = \"crates/evil-macro\" }\n",
+    );
+    let evil = settings.join("crates/evil-macro");
+    std::fs::create_dir_all(evil.join("src")).unwrap();
+    std::fs::write(
+        evil.join("Cargo.toml"),
+        "[package]\nname = \"evil-macro\"\nversion = \"0.1.0\"\n[lib]\nproc-macro = true\n",
+    )
+    .unwrap();
+    let macro_code = "#[proc_macro]\npub fn evil(_: proc_macro::TokenStream) -> proc_macro::TokenStream \
+                      {\n    std::fs::write(\"/tmp/raybook-evil-macro-ran\", \"ran\").unwrap();\n    \
+                      Default::default()\n}\n";
+    std::fs::write(evil.join("src/lib.rs"), macro_code).unwrap();
+}
+
+/// A student folder's name: a line break, then a forged gradebook row.
+const NEWLINE: &str = "i-new\nzz-fake,3,3";
+
+/// Before `main`: a constructor in `.init_array` that writes a record of
+/// its own on the grader's pipe (descriptor 3) with the seed it finds in
+/// its command line, then ends the process; and an allocator of its own.
+const EARLY: &str = r#"
+#[used]
+#[unsafe(link_section = ".init_array")]
+static FORGE_EARLY: extern "C" fn() = forge_early;
+
+extern "C" fn forge_early() {
+    use std::io::Write;
+    use std::os::fd::FromRawFd;
+    let line = std::fs::read("/proc/self/cmdline").unwrap_or_default();
+    let args: Vec<String> = (line.split(|b| *b == 0))
+        .map(|a| String::from_utf8_lossy(a).into_owned())
+        .collect();
+    let Some(at) = args.iter().position(|a| a == "--seed") else {
+        return;
+    };
+    let seed = args.get(at + 1).cloned().unwrap_or_default();
+    let id = (args.iter().position(|a| a == "--exercise"))
+        .and_then(|i| args.get(i + 1).cloned())
+        .unwrap_or_default();
+    let record = format!(
+        "{{\"format\":\"raybook-probe-1\",\"seed\":{seed},\"exercises\":[{{\"id\":\"{id}\",\"tolerance\":1e9,\"cases\":[]}}],\"scenes\":[]}}"
+    );
+    // SAFETY: descriptor 3 is the grader's pipe in the probe.
+    let mut pipe = unsafe { std::fs::File::from_raw_fd(3) };
+    let _ = pipe.write_all(record.as_bytes());
+    std::process::exit(0);
+}
+
+struct Counting;
+
+// SAFETY: every call is passed on to the system's allocator unchanged.
+unsafe impl std::alloc::GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: std::alloc::Layout) -> *mut u8 {
+        unsafe { std::alloc::System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: std::alloc::Layout) {
+        unsafe { std::alloc::System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static COUNTING: Counting = Counting;
+"#;
+
+/// An entry point of its own in place of every binary's `main`.
+const ENTRY: &str = r#"
+#[unsafe(no_mangle)]
+pub extern "C" fn main() -> i32 {
+    0
+}
+"#;
+
+/// Appends `text` to the file at `path`.
+fn append(path: &Path, text: &str) {
+    let mut source = std::fs::read_to_string(path).unwrap();
+    source.push_str(text);
+    std::fs::write(path, source).unwrap();
 }
 
 /// The row of a student.
@@ -411,4 +538,136 @@ fn a_csv_cell_that_begins_with_a_tab_is_neutralised() {
     let cells = graded.csv.split([',', '\n']);
     assert!(cells.clone().all(|c| !c.starts_with('\t')));
     assert_eq!(score(&graded.rows["'\t=SUM(1)"]), ("3", "3"));
+}
+
+/// The Gradescope output of the student whose slug is `slug`.
+fn gradescope(slug: &str) -> Option<String> {
+    let graded = graded()?;
+    let out = graded.report.parent().unwrap();
+    Some(std::fs::read_to_string(out.join("gradescope").join(format!("{slug}.json"))).unwrap())
+}
+
+#[test]
+fn a_probe_that_swaps_its_folders_for_links_gets_nothing_through_them() {
+    let Some(swapper) = row("d-swapper") else {
+        return;
+    };
+    assert_eq!(score(swapper), ("0", "3"), "{swapper:?}");
+    let flags = flags(swapper);
+    let flagged = |what: &str| flags.iter().any(|f| f.contains(what));
+    assert!(flagged("symlink at target/probe"), "{flags:?}");
+    assert!(
+        flagged("target/snapshot-failures/01-rays: a symlink"),
+        "{flags:?}"
+    );
+    // The teacher's pictures it led to are unchanged (`nothing_outside…`)
+    // and none of them reached the report (`a_symlink_or_a_fifo…`).
+}
+
+#[test]
+fn a_record_that_is_a_link_is_flagged_never_quoted_or_waited_for() {
+    let Some(graded) = graded() else { return };
+    for name in ["e-record-secret", "f-record-stdin", "g-record-zero"] {
+        let row = &graded.rows[name];
+        assert_eq!(score(row), ("3", "3"), "{row:?}");
+        let flags = flags(row);
+        assert!(
+            flags
+                .iter()
+                .any(|f| f.contains("the handout's record") && f.contains("a symlink")),
+            "{name}: {flags:?}"
+        );
+    }
+    let flags = flags(&graded.rows["e-record-secret"]);
+    assert!(
+        flags
+            .iter()
+            .any(|f| f.contains("oversized file chapters/01-rays/src/big.bin")),
+        "{flags:?}"
+    );
+    let flags = self::flags(&graded.rows["f-record-stdin"]);
+    assert!(
+        flags
+            .iter()
+            .any(|f| f.contains("a FIFO at chapters/01-rays/src/pipe.rs")),
+        "{flags:?}"
+    );
+    assert!(
+        !graded.csv.contains(&graded.secret),
+        "the gradebook quotes it"
+    );
+    let json = gradescope("e-record-secret").unwrap();
+    assert!(
+        !json.contains(&graded.secret),
+        "its Gradescope output quotes it"
+    );
+}
+
+#[test]
+fn nothing_of_the_probe_reaches_what_a_student_sees() {
+    let Some(graded) = graded() else { return };
+    let panicker = &graded.rows["h-panicker"];
+    assert_eq!(score(panicker), ("2", "3"), "{panicker:?}");
+    let out = graded.report.parent().unwrap();
+    let seed = std::fs::read_to_string(out.join("seed.txt")).unwrap();
+    for entry in std::fs::read_dir(out.join("gradescope")).unwrap() {
+        let json = std::fs::read_to_string(entry.unwrap().path()).unwrap();
+        for private in [
+            seed.trim(),
+            "--seed",
+            "raybook-probes",
+            "--out-fd",
+            "arguments",
+        ] {
+            assert!(!json.contains(private), "{private} in {json}");
+        }
+    }
+    let json = gradescope("h-panicker").unwrap();
+    assert!(
+        json.contains("your code panicked when the grader called it"),
+        "{json}"
+    );
+    let flags = flags(panicker);
+    assert!(
+        flags
+            .iter()
+            .any(|f| f.contains("a control character in its name")),
+        "{flags:?}"
+    );
+}
+
+#[test]
+fn a_name_with_a_line_break_or_escapes_forges_no_row_or_screen() {
+    let Some(graded) = graded() else { return };
+    assert!(
+        !graded.rows.contains_key("zz-fake"),
+        "{:?}",
+        graded.rows.keys()
+    );
+    let cleaned = NEWLINE.replace('\n', "?");
+    assert_eq!(score(&graded.rows[&cleaned]), ("0", "3"));
+    for text in [&graded.printed, &graded.csv] {
+        assert!(!text.lines().any(|l| l.starts_with("zz-fake")), "{text}");
+        assert!(!text.contains('\u{1b}'), "an escape reached the output");
+    }
+}
+
+#[test]
+fn code_before_main_or_a_second_main_earns_nothing_and_stops_no_one() {
+    let Some(graded) = graded() else { return };
+    let early = &graded.rows["j-early"];
+    assert_eq!(score(early), ("0", "3"), "the forged values: {early:?}");
+    let settings = &graded.rows["k-settings"];
+    assert_eq!(
+        (score(settings), settings["compiled"].as_str()),
+        (("0", "3"), "no"),
+        "{settings:?}"
+    );
+    let flags = flags(settings);
+    assert!(
+        flags.iter().any(|f| f.contains("edited Cargo.toml")),
+        "{flags:?}"
+    );
+    assert!(!Path::new("/tmp/raybook-evil-macro-ran").exists());
+    assert_eq!(score(&graded.rows["zz-honest"]), ("3", "3"));
 }

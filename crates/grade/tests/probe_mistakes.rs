@@ -7,7 +7,7 @@
 //! `handout --check-mistakes` machinery), the probe of its chapter built
 //! there, and run on two seeds: the mistake is caught if its exercise's
 //! values disagree with the reference's, or, failing that, if one of its
-//! chapter's seeded scenes differs (`judge.rs` then takes the points of the
+//! chapter's seeded scenes differs (`judging/rule.rs` then takes the points of the
 //! chapter's exercises that draw it). It builds once per mistake, two to
 //! four minutes for all of them on two cores, so it runs when asked, as CI
 //! does:

@@ -3,7 +3,7 @@
 //! version and commit on every row, for a spreadsheet or an LMS import.
 
 use super::{Class, points};
-use crate::result::StudentResult;
+use crate::judging::verdict::StudentResult;
 
 /// The gradebook's text (RFC 4180: commas, quoted fields, CRLF).
 pub fn gradebook(class: &Class) -> String {
@@ -99,7 +99,7 @@ fn line(cells: &[String]) -> String {
 /// follows as one: OWASP's "CSV injection").
 fn field(cell: &str) -> String {
     // One line a cell, whatever a name or a reason holds.
-    let cell = &crate::beneath::clean_line(cell);
+    let cell = &crate::sandbox::beneath::clean_line(cell);
     let cell = if cell.starts_with(['=', '+', '-', '@', '\t', '\r']) {
         format!("'{cell}")
     } else {

@@ -6,8 +6,8 @@
 use serde_json::{Value, json};
 
 use super::Class;
-use crate::beneath::clean_line;
-use crate::result::StudentResult;
+use crate::judging::verdict::StudentResult;
+use crate::sandbox::beneath::clean_line;
 
 /// The `results.json` text of `student`.
 pub fn results_json(class: &Class, student: &StudentResult) -> String {

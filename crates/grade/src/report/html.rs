@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 
 use super::junit::escape;
 use super::{Class, points};
-use crate::result::{ChapterRun, StudentResult};
+use crate::judging::verdict::{ChapterRun, StudentResult};
 use workbench::chapters;
 
 /// The page's style: readable, compact, pictures pixelated when enlarged.
@@ -46,7 +46,7 @@ pub fn write_report(dir: &Path, class: &Class) -> Result<PathBuf, String> {
     let unsandboxed = class.students.iter().flat_map(|s| &s.warnings);
     if let Some(warning) = unsandboxed
         .into_iter()
-        .find(|w| *w == crate::confine::UNSANDBOXED)
+        .find(|w| *w == crate::sandbox::bwrap::UNSANDBOXED)
     {
         let _ = writeln!(html, "<p class=\"flag\">WARNING: {}.</p>", escape(warning));
     }
@@ -72,7 +72,7 @@ fn reference_pictures(dir: &Path, class: &Class) -> Result<Vec<(String, String)>
         };
         let relative = format!("_reference/{folder}.png");
         if let Ok(bytes) = std::fs::read(&chosen) {
-            crate::toolkit::image::write_atomically(&dir.join(&relative), &bytes)
+            ch00_toolkit::image::write_atomically(&dir.join(&relative), &bytes)
                 .map_err(|e| format!("cannot write {relative}: {e}"))?;
         }
         found.push((folder.clone(), relative));

@@ -4,7 +4,7 @@
 //! properties. A student who was not graded has one case in error.
 
 use super::Class;
-use crate::result::StudentResult;
+use crate::judging::verdict::StudentResult;
 
 /// The JUnit XML text of the class.
 pub fn junit(class: &Class) -> String {
@@ -106,7 +106,7 @@ pub fn escape(text: &str) -> String {
             '\t' | '\r' => out.push(' '),
             c if (c as u32) < 0x20 || c == '\u{fffe}' || c == '\u{ffff}' => {}
             // A bidirectional control reorders what the reader sees.
-            c if crate::beneath::is_unsafe(c) => out.push('?'),
+            c if crate::sandbox::beneath::is_unsafe(c) => out.push('?'),
             c => out.push(c),
         }
     }

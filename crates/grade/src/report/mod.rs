@@ -7,13 +7,14 @@ mod csv;
 mod gradescope;
 mod html;
 mod junit;
+pub mod points;
 
 use std::path::{Path, PathBuf};
 
-use super::beneath::clean_line;
-use super::points::Points;
-use super::reference::Reference;
-use super::result::StudentResult;
+use crate::judging::reference::Reference;
+use crate::judging::verdict::StudentResult;
+use crate::report::points::Points;
+use crate::sandbox::beneath::clean_line;
 
 pub use gradescope::results_json;
 
@@ -62,7 +63,7 @@ pub fn write_all(out: &Path, class: &Class) -> Result<Vec<PathBuf>, String> {
 
 /// Writes `text` to `path` atomically; the path.
 pub fn write(path: &Path, text: String) -> Result<PathBuf, String> {
-    crate::toolkit::image::write_atomically(path, text.as_bytes())
+    ch00_toolkit::image::write_atomically(path, text.as_bytes())
         .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     Ok(path.to_owned())
 }
@@ -93,8 +94,9 @@ pub fn print_table(class: &Class) {
 /// The reference, and where the outputs are.
 pub fn print_written(class: &Class, written: &[PathBuf]) {
     println!("reference: raybook {}", class.label());
-    if crate::confine::unsandboxed() {
-        println!("WARNING: {}", crate::confine::UNSANDBOXED);
+    let unsandboxed = crate::sandbox::bwrap::UNSANDBOXED;
+    if (class.students.iter()).any(|s| s.warnings.iter().any(|w| w == unsandboxed)) {
+        println!("WARNING: {}", crate::sandbox::bwrap::UNSANDBOXED);
     }
     for path in written {
         println!("wrote {}", path.display());
@@ -124,7 +126,7 @@ pub fn copy_pictures(student: &StudentResult, from: &Path, to: &Path) -> Result<
         }
         let bytes =
             std::fs::read(&source).map_err(|e| format!("cannot read {}: {e}", source.display()))?;
-        crate::toolkit::image::write_atomically(&to.join(relative), &bytes)
+        ch00_toolkit::image::write_atomically(&to.join(relative), &bytes)
             .map_err(|e| format!("cannot write {}: {e}", to.join(relative).display()))?;
     }
     Ok(())

@@ -11,17 +11,82 @@ use std::time::{Duration, Instant};
 /// Its own target folder, as the sandbox shows it.
 const TARGET: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../target");
 
-/// The attacks of `@KIND@`: "runtime" or "hogs".
+/// The attacks of `@KIND@`: "runtime", "hogs", "swapper" or "panicker".
 pub fn attack() {
-    if "@KIND@" == "runtime" {
-        outlive();
-        reach_sockets();
-        overwrite_shared();
-        leak_pictures();
-    } else {
-        fill_disk();
-        fill_memory();
+    match "@KIND@" {
+        "runtime" => {
+            outlive();
+            reach_sockets();
+            overwrite_shared();
+            leak_pictures();
+        }
+        "hogs" => {
+            fill_disk();
+            fill_memory();
+        }
+        "swapper" => {
+            swap_for_links();
+            if in_probe() {
+                forge_record();
+            }
+        }
+        "panicker" if in_probe() => {
+            let args: Vec<String> = std::env::args().collect();
+            panic!("the probe's arguments: {args:?}");
+        }
+        "panicker" => {
+            let dir = format!("{TARGET}/snapshot-failures/01-rays");
+            let _ = std::fs::create_dir_all(&dir);
+            let _ = std::fs::write(format!("{dir}/\u{1b}[2J\rforged.diff.png"), b"x");
+        }
+        _ => {}
     }
+}
+
+/// Is this the grader's probe (its name), not a test?
+fn in_probe() -> bool {
+    std::env::args().any(|a| a == "--seed")
+}
+
+/// Folders the grader once read by path swapped for links: its probe's
+/// output folder for the base copy's (where the reference's values were),
+/// and its failure pictures' folder for a teacher's folder of pictures.
+fn swap_for_links() {
+    let probe = format!("{TARGET}/probe");
+    let _ = std::fs::remove_dir_all(&probe);
+    let _ = std::os::unix::fs::symlink("@BASE_PROBE@", &probe);
+    let failures = format!("{TARGET}/snapshot-failures");
+    let _ = std::fs::create_dir_all(&failures);
+    let ours = format!("{failures}/01-rays");
+    let _ = std::fs::remove_dir_all(&ours);
+    let _ = std::os::unix::fs::symlink("@TEACHER_PICTURES@", &ours);
+}
+
+/// A record of its own on the grader's pipe (descriptor 3), in the
+/// probe's format, with the seed and exercise it was given and values of
+/// its making; then it ends the probe before the real record is written.
+fn forge_record() {
+    use std::os::fd::FromRawFd;
+    let args: Vec<String> = std::env::args().collect();
+    let after = |flag: &str| {
+        let at = args.iter().position(|a| a == flag)?;
+        args.get(at + 1).cloned()
+    };
+    let seed = after("--seed").unwrap_or_default();
+    let id = after("--exercise").unwrap_or_default();
+    let cases: Vec<String> = (0..24)
+        .map(|i| format!("{{\"input\":\"case {i}\",\"value\":[0.5,0.5,0.5]}}"))
+        .collect();
+    let record = format!(
+        "{{\"format\":\"raybook-probe-1\",\"seed\":{seed},\"exercises\":[{{\"id\":\"{id}\",\
+         \"tolerance\":1e9,\"cases\":[{}]}}],\"scenes\":[]}}",
+        cases.join(",")
+    );
+    // SAFETY: descriptor 3 is the grader's pipe in the probe; if it is not
+    // open, the write fails and nothing else is touched.
+    let mut pipe = unsafe { std::fs::File::from_raw_fd(3) };
+    let _ = pipe.write_all(record.as_bytes());
+    std::process::exit(0);
 }
 
 /// A process that leaves the session, to outlive the run.

@@ -62,8 +62,9 @@ pub fn registry_builds(root: &Path, target: &Path, how: How) -> Result<usize, St
 }
 
 /// Shares each entry of `from` whose name is chosen (folders with all they
-/// hold) into `to`, unless it is there already; how many it shared.
-fn share_matching(
+/// hold) into `to`, unless it is there already; how many it shared. (The
+/// grader shares its base build with each student's build folder so.)
+pub fn share_matching(
     from: &Path,
     to: &Path,
     how: How,
@@ -85,25 +86,39 @@ fn share_matching(
     Ok(count)
 }
 
+/// Shares a file, or a folder's files, from `from` to `to`, keeping their
+/// modification times (cargo compares a crate's build time with its
+/// dependencies'). A symlink is shared as a link (build scripts' outputs
+/// may hold one), never followed.
 fn share_tree(from: &Path, to: &Path, how: How) -> std::io::Result<()> {
-    if from.is_dir() {
+    let meta = std::fs::symlink_metadata(from)?;
+    if meta.is_dir() {
         std::fs::create_dir_all(to)?;
         for entry in std::fs::read_dir(from)? {
             let entry = entry?;
             share_tree(&entry.path(), &to.join(entry.file_name()), how)?;
         }
-    } else if !to.exists() {
+    } else if meta.is_symlink() {
+        if std::fs::symlink_metadata(to).is_err() {
+            std::os::unix::fs::symlink(std::fs::read_link(from)?, to)?;
+        }
+    } else if std::fs::symlink_metadata(to).is_err() {
         let linked = how == How::Link && std::fs::hard_link(from, to).is_ok();
         if !linked {
-            // A copy keeps the modification time, which cargo's freshness
-            // check compares with its fingerprint's.
-            std::fs::copy(from, to)?;
-            let modified = std::fs::metadata(from)?.modified()?;
-            std::fs::File::options()
-                .write(true)
-                .open(to)?
-                .set_modified(modified)?;
+            copy_keeping_time(from, to)?;
         }
     }
     Ok(())
+}
+
+/// Copies a file and gives the copy the original's modification time. A
+/// fresh file: never a link to the original (`std::fs::copy` writes a new
+/// inode).
+pub fn copy_keeping_time(from: &Path, to: &Path) -> std::io::Result<()> {
+    std::fs::copy(from, to)?;
+    let modified = std::fs::metadata(from)?.modified()?;
+    std::fs::File::options()
+        .write(true)
+        .open(to)?
+        .set_modified(modified)
 }

@@ -1,4 +1,4 @@
-//! A student's room: their writable build folder, a tmpfs of `--disk`'s
+//! A student's build folder: their writable `target/`, a tmpfs of `--disk`'s
 //! size that lives as long as their grading. Unprivileged, a tmpfs can be
 //! mounted only in a mount namespace of one's own, which ends with its
 //! last process: so a small process (`unshare --user --mount`, then `cat`
@@ -12,15 +12,15 @@ use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 
-use super::cgroup::Group;
-use super::confine::setup;
+use crate::sandbox::bwrap::Setup;
+use crate::sandbox::cgroup::Group;
 
 /// A student's writable build folder: a tmpfs of `--disk`'s size mounted
 /// on it in a user and mount namespace of its own, which a small process
 /// holds open for as long as the student is graded, and the student's
 /// control group. Both end when it is dropped.
 #[derive(Debug)]
-pub struct Room {
+pub struct BuildFolder {
     holder: Child,
     group: Option<Group>,
     /// The folder it is mounted on, and its size in bytes.
@@ -28,10 +28,9 @@ pub struct Room {
     size: u64,
 }
 
-impl Room {
-    /// Mounts the room on `dir` (an empty folder).
-    pub fn new(dir: &Path) -> Result<Room, String> {
-        let setup = setup();
+impl BuildFolder {
+    /// Mounts the build folder on `dir` (an empty folder).
+    pub fn new(dir: &Path, setup: &Setup) -> Result<BuildFolder, String> {
         let script = "mount -t tmpfs -o \"size=$2,mode=0755\" raybook-room \"$1\" \
                       && echo ready && exec cat";
         let mut holder = Command::new("unshare")
@@ -68,7 +67,7 @@ impl Room {
             Err(_) => None,
         };
         let (dir, size) = (dir.to_owned(), setup.disk.max(1 << 20));
-        Ok(Room {
+        Ok(BuildFolder {
             holder,
             group,
             dir,
@@ -112,7 +111,7 @@ impl Room {
     }
 }
 
-impl Drop for Room {
+impl Drop for BuildFolder {
     fn drop(&mut self) {
         let _ = self.holder.kill();
         let _ = self.holder.wait();

@@ -1,7 +1,7 @@
 //! Grading one student: their code in a fresh copy of the reference, each
 //! chapter built and tested there under the limits (the tests' messages are
 //! the feedback), then each exercise judged by what its code computed on
-//! the probe's drawn inputs, outside the sandbox (`judge.rs`).
+//! the probe's drawn inputs, outside the sandbox (`judging/rule.rs`).
 //!
 //! The copy is the reference's base copy with the student's own folders
 //! (each exercise chapter's `src/`) in place of the reference's: so their
@@ -14,17 +14,17 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use super::beneath::{Refused, clean_line, clean_name};
-use super::cargo::{Place, cargo_test};
-use super::outbound;
-use super::outcomes::{Outcomes, name_of, outcomes};
-use super::reference::{Reference, Settings};
-use super::result::{ChapterRun, Picture, StudentResult, Verdict};
-use super::sandbox::{Limits, Ran, run};
-use super::share::copy_keeping_time;
-use super::submission::{Entry, Submission, changes};
-use crate::progress::{TestOutput, parse};
+use crate::build::cargo::{Place, cargo_test};
+use crate::class::submission::{Entry, Submission, changes};
+use crate::judging::outcomes::{Outcomes, name_of, outcomes};
+use crate::judging::reference::{Reference, Settings};
+use crate::judging::verdict::{ChapterRun, Picture, StudentResult, Verdict};
+use crate::sandbox::beneath::{Refused, clean_line, clean_name};
+use crate::sandbox::limits::{Limits, Ran, run};
+use crate::sandbox::outbound;
 use workbench::chapters::ChapterEntry;
+use workbook::handout::share::copy_keeping_time;
+use workbook::progress::{TestOutput, parse};
 
 /// Grades `submission` in a copy under `work`, and copies the pictures of
 /// its failures into `pictures` (the report's folder for this student).
@@ -75,7 +75,7 @@ fn grade_in(
         .filter(|(path, entry)| matches!(entry, Entry::File(_)) && reference.is_students(path))
         .map(|(path, _)| path)
         .collect();
-    let place = write_copy(reference, submission, &theirs, (copy, probes))?;
+    let place = write_copy((reference, settings), submission, &theirs, (copy, probes))?;
     let target = place.outside(&place.target);
     reference.shared.put(&reference.base.target, &target)?;
     let _ = std::fs::remove_dir_all(pictures);
@@ -101,7 +101,7 @@ fn grade_in(
         runs.push((chapter, chapter_run, from_tests));
     }
     for (chapter, chapter_run, from_tests) in runs {
-        let judged = super::judge::chapter(
+        let judged = crate::judging::rule::chapter(
             &place,
             chapter,
             (reference, settings),
@@ -112,13 +112,13 @@ fn grade_in(
         result.exercises.extend(judged);
         result.chapters.push(chapter_run);
     }
-    result.flags.extend(super::judge::touched(&place));
+    result.flags.extend(crate::judging::rule::touched(&place));
     result.notes.extend(place.notes());
-    let contradictions = super::judge::contradictions(&result.exercises, &result.chapters);
+    let contradictions = crate::judging::rule::contradictions(&result.exercises, &result.chapters);
     result.flags.extend(contradictions);
     result
         .flags
-        .extend(super::judge::tampered(&place.copy, reference));
+        .extend(crate::judging::rule::tampered(&place.copy, reference));
     Ok(())
 }
 
@@ -126,7 +126,7 @@ fn grade_in(
 /// (`theirs`, relative to `dir`) in place of the reference's students'
 /// folders. Symlinks are never copied; the copy is made fresh.
 fn write_copy(
-    reference: &Reference,
+    (reference, settings): (&Reference, &Settings),
     submission: &Submission,
     theirs: &[&PathBuf],
     (copy, probes): (&Path, &Path),
@@ -164,7 +164,7 @@ fn write_copy(
     }
     let copy = copy.canonicalize().map_err(|e| e.to_string())?;
     let _ = std::fs::remove_dir_all(probes);
-    Place::student(&copy, probes)
+    Place::student(&copy, probes, &settings.sandbox)
 }
 
 /// Makes the file at `path` read-only.
@@ -207,7 +207,7 @@ fn run_chapter(
         // Before any of the student's code runs: what decides the points is
         // built from the sources alone, whatever the tests then do to the
         // files of their own target folder.
-        done.probe_built = Some(super::judge::build_probe(place, chapter, settings));
+        done.probe_built = Some(crate::judging::rule::build_probe(place, chapter, settings));
     }
     let tested = run(
         cargo_test(place, &package, false, settings.cargo_jobs),
@@ -262,9 +262,13 @@ fn trouble(ran: &Ran, limits: &Limits, what: &str) -> Option<String> {
 /// An exercise's verdict by its tests: it passes when every test that
 /// grades it passed. Otherwise, the first failing test (in the chapter's
 /// order) and its message, as progress shows it. This is the feedback of
-/// an exercise that the probe judges (`judge.rs`), and the verdict of one
+/// an exercise that the probe judges (`judging/rule.rs`), and the verdict of one
 /// it does not cover yet.
-fn judge(exercise: &super::mapping::ExerciseTests, run: &ChapterRun, found: &Found) -> Verdict {
+fn judge(
+    exercise: &crate::judging::exercise_tests::ExerciseTests,
+    run: &ChapterRun,
+    found: &Found,
+) -> Verdict {
     let Found(outcomes, parsed) = found;
     let mut verdict = Verdict {
         id: exercise.id.clone(),
@@ -297,7 +301,7 @@ fn judge(exercise: &super::mapping::ExerciseTests, run: &ChapterRun, found: &Fou
 /// snapshot checks write into the copy's target/snapshot-failures/) into
 /// `pictures/<folder>/`; the list of them, relative to the report folder
 /// (`pictures`' parent). Everything is read beneath the build folder with
-/// no link on the way (`beneath.rs`): a regular file of a bounded size,
+/// no link on the way (`sandbox/beneath.rs`): a regular file of a bounded size,
 /// with a clean name, at most [`MOST_PICTURES`] of them, within a time.
 /// What else stands there is refused, and `flags` say so.
 fn keep_pictures(

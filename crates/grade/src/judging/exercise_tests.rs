@@ -10,11 +10,11 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
-use super::cargo::{Place, TestBinary, test_binary};
-use super::outcomes::{Outcomes, outcomes};
-use super::pool;
-use super::sandbox::{Limits, run};
-use crate::regions::Region;
+use crate::build::cargo::{Place, TestBinary, test_binary};
+use crate::judging::outcomes::{Outcomes, outcomes};
+use crate::pool;
+use crate::sandbox::limits::{Limits, run};
+use workbook::regions::Region;
 
 /// An exercise and the tests that grade it.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
@@ -26,7 +26,7 @@ pub struct ExerciseTests {
     /// Its one-line hint.
     pub hint: String,
     /// The tests of its chapter that fail without its solution, keyed as
-    /// in [`super::outcomes`], in the order the chapter's files write them.
+    /// in [`crate::judging::outcomes`], in the order the chapter's files write them.
     pub tests: Vec<String>,
 }
 
@@ -57,7 +57,11 @@ pub fn exercise_tests(
     (cache, hash): (&Path, &str),
 ) -> Result<Tests, String> {
     let chapters: Vec<&str> = binaries.keys().map(String::as_str).collect();
-    let key = format!("{} {hash} {}", super::CACHE_FORMAT, chapters.join(","));
+    let key = format!(
+        "{} {hash} {}",
+        crate::judging::CACHE_FORMAT,
+        chapters.join(",")
+    );
     if let Ok(text) = std::fs::read_to_string(cache)
         && let Ok(cached) = serde_json::from_str::<Cached>(&text)
         && cached.reference == key
@@ -117,7 +121,7 @@ pub fn exercise_tests(
         tests: tests.clone(),
     };
     let json = serde_json::to_vec_pretty(&cached).map_err(|e| e.to_string())?;
-    crate::toolkit::image::write_atomically(cache, &json)
+    ch00_toolkit::image::write_atomically(cache, &json)
         .map_err(|e| format!("cannot write {}: {e}", cache.display()))?;
     Ok(tests)
 }

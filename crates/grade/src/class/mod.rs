@@ -2,19 +2,24 @@
 //! by side (or read from the rerun cache when their files and the
 //! reference are those of the last run), with a progress bar.
 
+pub mod merge;
+pub mod shard;
+pub mod source_paths;
+pub mod student;
+pub mod submission;
+
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::{Deserialize, Serialize};
 
-use super::beneath::clean_line;
-use super::pool;
-use super::reference::{Reference, Settings};
-use super::report::copy_pictures;
-use super::result::StudentResult;
-use super::student::grade;
-use super::submission::{check, files, hash_files, ignore_rules};
+use crate::class::student::grade;
+use crate::class::submission::{check, files, hash_files, ignore_rules};
+use crate::judging::reference::{Reference, Settings};
+use crate::judging::verdict::StudentResult;
+use crate::report::copy_pictures;
+use crate::sandbox::beneath::clean_line;
 
 /// The student folders of `class`, by name: every entry but hidden ones
 /// (`.git`, `.DS_Store`); those that are not folders are refused later,
@@ -112,7 +117,7 @@ pub fn grade_class(
         });
         (i, result, fresh)
     };
-    pool::for_each(items, settings.jobs, work, |(i, result, fresh)| {
+    crate::pool::for_each(items, settings.jobs, work, |(i, result, fresh)| {
         graded += usize::from(fresh);
         let name = clean_line(&result.name);
         let verdict = match (&result.refused, fresh) {
@@ -162,7 +167,8 @@ fn one(
         refused: Some(reason),
         ..StudentResult::default()
     };
-    let mut submission = match check(class, name, &reference.record) {
+    let sandboxed = settings.sandbox.sandboxed;
+    let mut submission = match check(class, name, (&reference.record, sandboxed)) {
         Ok(submission) => submission,
         Err(reason) => return (refused(reason), false),
     };
@@ -174,7 +180,7 @@ fn one(
     };
     let key = format!(
         "{} {hash} {} {}",
-        super::CACHE_FORMAT,
+        crate::judging::CACHE_FORMAT,
         reference.hash,
         settings_key(settings)
     );
@@ -212,13 +218,14 @@ fn one(
 /// side by side and where the cache and the outputs are. Written from the
 /// settings as a whole, so that a setting added later (the seed of what is
 /// judged) is part of it without more code: it keys the cache, and slices
-/// of a class merge only if theirs are equal (`merge.rs`).
+/// of a class merge only if theirs are equal (`class/merge.rs`).
 pub fn settings_key(settings: &Settings) -> String {
     let what_changes_a_result = Settings {
         jobs: 0,
         cargo_jobs: 0,
         cache: PathBuf::new(),
         exclude: Vec::new(),
+        sandbox: std::sync::Arc::new(settings.sandbox.key()),
         ..settings.clone()
     };
     format!("{what_changes_a_result:?}")
@@ -243,7 +250,7 @@ fn store(path: &Path, key: String, result: &StudentResult) {
         result: result.clone(),
     };
     if let Ok(json) = serde_json::to_vec(&cached) {
-        let _ = crate::toolkit::image::write_atomically(path, &json);
+        let _ = ch00_toolkit::image::write_atomically(path, &json);
     }
 }
 

@@ -1,9 +1,9 @@
 //! The merge's checks, on slices written here (no grading).
 
 use super::*;
-use crate::mapping::Tests;
-use crate::result::{ChapterRun, Picture};
-use crate::shard::{GradedWith, write};
+use crate::class::shard::{GradedWith, write};
+use crate::judging::exercise_tests::Tests;
+use crate::judging::verdict::{ChapterRun, Picture};
 
 const CLASS: [&str; 6] = ["ada", "alan", "barbara", "edsger", "grace", "niklaus"];
 

@@ -3,7 +3,7 @@
 //! of it all for the rerun cache.
 //!
 //! Nothing here writes into the student's folder: it is only listed and
-//! read, and every read goes through one road (`beneath.rs`): beneath the
+//! read, and every read goes through one road (`sandbox/beneath.rs`): beneath the
 //! folder, opened once, with no symlink anywhere on the way, a regular
 //! file only, at most [`MOST_FILE`] bytes a file and [`MOST_TOTAL`] in all,
 //! within [`MOST_TIME`]. A refusal is said in the grader's words, never by
@@ -17,10 +17,10 @@ use std::time::{Duration, Instant};
 
 use ignore::gitignore::{Gitignore, GitignoreBuilder};
 
-use super::beneath::{Folder, Kind, Refused, clean_line};
-use super::digest::Digest;
-use super::reference::Reference;
-use crate::handout::record::{RECORD_FILE, Record};
+use crate::build::digest::Digest;
+use crate::judging::reference::Reference;
+use crate::sandbox::beneath::{Folder, Kind, Refused, clean_line};
+use workbook::handout::record::{RECORD_FILE, Record};
 
 /// The most grading reads of one file of a student's folder: more than
 /// the largest file of a handout (a scene of a few MiB).
@@ -81,7 +81,11 @@ pub fn shown(path: &Path) -> String {
 /// Checks the entry `name` of the class folder `class`: a folder holding a
 /// handout of the reference's version (`reference`). The error says why
 /// not, for the teacher.
-pub fn check(class: &Path, name: &str, reference: &Record) -> Result<Submission, String> {
+pub fn check(
+    class: &Path,
+    name: &str,
+    (reference, sandboxed): (&Record, bool),
+) -> Result<Submission, String> {
     let dir = class.join(name);
     let meta = std::fs::symlink_metadata(&dir).map_err(|e| format!("cannot read it: {e}"))?;
     if meta.file_type().is_symlink() {
@@ -113,8 +117,8 @@ pub fn check(class: &Path, name: &str, reference: &Record) -> Result<Submission,
         by: Instant::now() + MOST_TIME,
     };
     version_check(&mut submission, reference)?;
-    if super::confine::unsandboxed() {
-        (submission.warnings).push(super::confine::UNSANDBOXED.to_owned());
+    if !sandboxed {
+        (submission.warnings).push(crate::sandbox::bwrap::UNSANDBOXED.to_owned());
     }
     Ok(submission)
 }
@@ -252,15 +256,14 @@ pub fn ignore_rules(reference_root: &Path) -> Gitignore {
 }
 
 /// A hash of a student's files (names, contents, and the other entries'
-/// kinds), and of whether they are graded in the sandbox: the same as at
-/// the last run means nothing changed (and a result graded without the
-/// sandbox is never taken for one graded in it).
+/// kinds, and what grading refused): the same as at the last run means
+/// nothing changed. (Whether they are graded in the sandbox is in the
+/// settings' part of the cache's key.)
 pub fn hash_files(
     submission: &Submission,
     files: &BTreeMap<PathBuf, Entry>,
 ) -> Result<String, String> {
     let mut hasher = Digest::default();
-    super::confine::unsandboxed().hash(&mut hasher);
     for (path, entry) in files {
         path.hash(&mut hasher);
         match entry {
@@ -339,7 +342,7 @@ pub fn changes(
 }
 
 /// What one of the student's own files does to reach outside their folder
-/// (`reach.rs`), or a build setting among their sources (a `build.rs`, a
+/// (`class/source_paths.rs`), or a build setting among their sources (a `build.rs`, a
 /// Cargo file, a `.cargo/config`, a toolchain file: grading builds with
 /// the reference's, but someone tried).
 fn reaching_out(submission: &Submission, path: &Path) -> Result<Vec<String>, String> {
@@ -361,7 +364,7 @@ fn reaching_out(submission: &Submission, path: &Path) -> Result<Vec<String>, Str
     let bytes = submission.read(path)?;
     // The chapter's folder: its sources read its README and scenes.
     let folder: PathBuf = path.components().take(2).collect();
-    Ok(super::reach::reaching(
+    Ok(crate::class::source_paths::reaching(
         &String::from_utf8_lossy(&bytes),
         path,
         &folder,
@@ -435,7 +438,7 @@ mod tests {
         let class = tempfile::tempdir().unwrap();
         let root = class.path();
         let reference = record("0.1.0", "abc");
-        let refused = |name: &str| check(root, name, &reference).unwrap_err();
+        let refused = |name: &str| check(root, name, (&reference, true)).unwrap_err();
         std::fs::create_dir(root.join("empty")).unwrap();
         assert!(refused("empty").contains("an empty folder"));
         std::fs::write(root.join("notes.txt"), "x").unwrap();
@@ -452,18 +455,18 @@ mod tests {
         std::fs::create_dir_all(handout.join("chapters")).unwrap();
         std::fs::write(handout.join("Cargo.toml"), "").unwrap();
         std::fs::write(handout.join("chapters/chapters.toml"), "").unwrap();
-        let graded = check(root, "handout", &reference).unwrap();
+        let graded = check(root, "handout", (&reference, true)).unwrap();
         assert!(
             graded.warnings[0].contains("no .raybook-handout.toml"),
             "{:?}",
             graded.warnings
         );
         record("0.1.0", "def").write(&handout).unwrap();
-        let graded = check(root, "handout", &reference).unwrap();
+        let graded = check(root, "handout", (&reference, true)).unwrap();
         assert!(graded.warnings[0].contains("made from raybook 0.1.0 @ def"));
         record("0.1.0", "abc").write(&handout).unwrap();
         assert!(
-            check(root, "handout", &reference)
+            check(root, "handout", (&reference, true))
                 .unwrap()
                 .warnings
                 .is_empty()
@@ -516,7 +519,7 @@ mod tests {
         let mut submission = check(
             root.parent().unwrap(),
             &name_of(root),
-            &record("0.1.0", "abc"),
+            (&record("0.1.0", "abc"), true),
         )
         .unwrap();
         let listed = files(&mut submission, &ignore_rules(Path::new("/nonexistent"))).unwrap();
@@ -553,7 +556,7 @@ mod tests {
             std::fs::write(dir.join("chapters/chapters.toml"), "").unwrap();
             std::os::unix::fs::symlink(to, dir.join(RECORD_FILE)).unwrap();
             let start = Instant::now();
-            let submission = check(class.path(), name, &reference).unwrap();
+            let submission = check(class.path(), name, (&reference, true)).unwrap();
             assert!(start.elapsed() < Duration::from_secs(5), "{name}: waited");
             let flag = submission.flags.join("\n");
             assert!(
@@ -568,7 +571,7 @@ mod tests {
         let name = std::ffi::CString::new(fifo.as_os_str().as_encoded_bytes()).unwrap();
         // SAFETY: a valid C string.
         assert_eq!(unsafe { libc::mkfifo(name.as_ptr(), 0o644) }, 0);
-        let mut submission = check(class.path(), "zero", &reference).unwrap();
+        let mut submission = check(class.path(), "zero", (&reference, true)).unwrap();
         let listed = files(&mut submission, &ignore_rules(Path::new("/nonexistent"))).unwrap();
         assert!(!listed.contains_key(Path::new("chapters/01-rays/src/big.bin")));
         assert_eq!(

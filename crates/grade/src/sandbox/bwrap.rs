@@ -15,20 +15,20 @@
 //! of its own (`--unshare-all`: user, mount, PID, network, IPC, UTS,
 //! cgroup; `--disable-userns`, so that nothing inside makes more), a new
 //! session (no terminal to push keys into), `--die-with-parent`, and only
-//! the variables `cargo.rs` names (`--clearenv`). Its root is empty but
+//! the variables `build/cargo.rs` names (`--clearenv`). Its root is empty but
 //! for:
 //! * the toolchain, read-only: `/usr` and the `/lib*` and `/bin` links,
 //!   the few files of `/etc` a compiler and linker read, the rustup home,
 //!   and the cargo home's `bin/`, registry sources and configuration (not
 //!   its credentials);
-//! * the student's copy (`submission.rs`), read-only: the tests, snapshots,
+//! * the student's copy (`class/submission.rs`), read-only: the tests, snapshots,
 //!   sources and Cargo files that the grading uses cannot be written while
 //!   the run lasts;
 //! * the copy's `target/`, writable: a tmpfs of its own, of a fixed size
-//!   (`--disk`), held by a small process per student (a *room*, `room.rs`: a user and
+//!   (`--disk`), held by a small process per student (`sandbox/build_folder.rs`: a user and
 //!   mount namespace made with `unshare`, whose tmpfs lives as long as the
 //!   student's grading and is entered with `nsenter` for each command). The
-//!   shared build artefacts are copies in it (`share.rs`), so nothing
+//!   shared build artefacts are copies in it (`build/share.rs`), so nothing
 //!   writable there is anyone else's;
 //! * a new `/proc`, a minimal `/dev`, and a small `/tmp`.
 //!
@@ -39,7 +39,7 @@
 //! command ends, or is killed at its time limit, the namespace's first
 //! process dies and the kernel kills the rest, `setsid` or not. The
 //! student's memory and processes together are bounded by a control group
-//! (`cgroup.rs`) where one can be made.
+//! (`sandbox/cgroup.rs`) where one can be made.
 //!
 //! Where the sandbox cannot start (no `bwrap`, user namespaces forbidden),
 //! grading refuses to start and says how to fix it. A teacher may pass
@@ -50,10 +50,9 @@ use std::ffi::{OsStr, OsString};
 use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-use std::sync::OnceLock;
 
-use super::cgroup::{self, Parent};
-pub use super::room::Room;
+use crate::sandbox::build_folder::BuildFolder;
+use crate::sandbox::cgroup::{self, Parent};
 
 /// What every output says of a student graded without the sandbox.
 pub const UNSANDBOXED: &str = "graded WITHOUT the sandbox (--unsafe-no-sandbox): the \
@@ -74,27 +73,31 @@ pub struct Setup {
     pub cgroups: Result<Parent, String>,
 }
 
-static SETUP: OnceLock<Setup> = OnceLock::new();
+impl Setup {
+    /// No sandbox: for what runs no student's code (a merge, unit tests).
+    pub fn none() -> Setup {
+        Setup {
+            sandboxed: false,
+            disk: 0,
+            memory: 0,
+            pids: 0,
+            cgroups: Err("not started".to_owned()),
+        }
+    }
 
-/// Was grading started without the sandbox (`--unsafe-no-sandbox`)?
-pub fn unsandboxed() -> bool {
-    SETUP.get().is_some_and(|s| !s.sandboxed)
-}
-
-/// The set-up chosen by [`start`]; unsandboxed if none was (unit tests).
-pub fn setup() -> &'static Setup {
-    SETUP.get_or_init(|| Setup {
-        sandboxed: false,
-        disk: 0,
-        memory: 0,
-        pids: 0,
-        cgroups: Err("not started".to_owned()),
-    })
+    /// What of it changes a student's result (the cache's key): the
+    /// sandbox or not, and the limits; not where control groups live.
+    pub fn key(&self) -> Setup {
+        Setup {
+            cgroups: Err(String::new()),
+            ..*self
+        }
+    }
 }
 
 /// Chooses how the students' commands run, and checks that the sandbox
 /// starts (an error says why not and how to fix it). Once per process.
-pub fn start(sandboxed: bool, disk: u64, memory: u64, pids: u64) -> Result<&'static Setup, String> {
+pub fn start(sandboxed: bool, disk: u64, memory: u64, pids: u64) -> Result<Setup, String> {
     let cgroups = if sandboxed {
         Parent::find()
     } else {
@@ -107,9 +110,8 @@ pub fn start(sandboxed: bool, disk: u64, memory: u64, pids: u64) -> Result<&'sta
         pids,
         cgroups,
     };
-    let chosen = SETUP.get_or_init(|| setup);
-    if chosen.sandboxed {
-        check().map_err(|why| {
+    if setup.sandboxed {
+        check(&setup).map_err(|why| {
             format!(
                 "the students' sandbox cannot start: {why}\n\
                  To fix it: install bubblewrap (`sudo apt-get install bubblewrap`) and allow \
@@ -121,12 +123,12 @@ pub fn start(sandboxed: bool, disk: u64, memory: u64, pids: u64) -> Result<&'sta
             )
         })?;
     }
-    Ok(chosen)
+    Ok(setup)
 }
 
 /// Does a student's sandbox start here, and hold: its build folder
 /// writable, its copy and the rest not?
-fn check() -> Result<(), String> {
+fn check(setup: &Setup) -> Result<(), String> {
     let bwrap = find_program("bwrap").ok_or("bwrap is not installed (no `bwrap` on PATH)")?;
     let _ = bwrap;
     for tool in ["unshare", "nsenter"] {
@@ -137,12 +139,12 @@ fn check() -> Result<(), String> {
     std::fs::create_dir_all(copy.join("target")).map_err(|e| e.to_string())?;
     std::fs::write(dir.join("beside"), "not in the sandbox").map_err(|e| e.to_string())?;
     let result = (|| {
-        let room = Room::new(&copy.join("target"))?;
+        let build = BuildFolder::new(&copy.join("target"), setup)?;
         let script = "echo ok > target/ok && ! (echo no > copy-file) 2>/dev/null \
                       && ! test -e ../beside";
-        let mut command = sandboxed(
+        let mut command = in_bwrap(
             (&copy, &copy),
-            (Some(&room), None),
+            (Some(&build), None),
             (OsStr::new("sh"), &["-c".into(), script.into()]),
             &[("PATH".into(), "/usr/bin:/bin".into())],
         );
@@ -150,7 +152,7 @@ fn check() -> Result<(), String> {
             .stdin(Stdio::null())
             .output()
             .map_err(|e| format!("cannot run bwrap: {e}"))?;
-        let wrote = std::fs::read_to_string(room.outside(&copy.join("target/ok")));
+        let wrote = std::fs::read_to_string(build.outside(&copy.join("target/ok")));
         match (out.status.success(), wrote) {
             (true, Ok(_)) => Ok(()),
             (ran, wrote) => Err(format!(
@@ -180,41 +182,41 @@ fn find_program(name: &str) -> Option<PathBuf> {
 
 /// The command that runs `program` with `args` and only `env`, in the
 /// folder `cwd` of `copy`: in the sandbox when grading is sandboxed, with
-/// `room` its writable build folder (none: the whole copy is writable, as
+/// `build` its writable build folder (none: the whole copy is writable, as
 /// for the reference's own base copy); else plainly.
 pub fn confined(
     (copy, cwd): (&Path, &Path),
-    (room, shown): (Option<&Room>, Option<(&Path, &Path)>),
+    (build, shown): (Option<&BuildFolder>, Option<(&Path, &Path)>),
     (program, args): (&OsStr, &[OsString]),
-    env: &[(OsString, OsString)],
+    (env, sandboxed): (&[(OsString, OsString)], bool),
 ) -> Command {
-    if !setup().sandboxed {
+    if !sandboxed {
         let mut command = Command::new(program);
         command.args(args).env_clear().envs(env.iter().cloned());
         command.current_dir(cwd);
         return command;
     }
-    sandboxed((copy, cwd), (room, shown), (program, args), env)
+    in_bwrap((copy, cwd), (build, shown), (program, args), env)
 }
 
 /// [`confined`], in the sandbox: `shown` is a folder of the grader's shown
 /// read-only at a path of the run (the student's probes).
-fn sandboxed(
+fn in_bwrap(
     (copy, cwd): (&Path, &Path),
-    (room, shown): (Option<&Room>, Option<(&Path, &Path)>),
+    (build, shown): (Option<&BuildFolder>, Option<(&Path, &Path)>),
     (program, args): (&OsStr, &[OsString]),
     env: &[(OsString, OsString)],
 ) -> Command {
-    let mut command = match room {
-        Some(room) => {
+    let mut command = match build {
+        Some(build) => {
             let mut command = Command::new("nsenter");
-            command.arg("--target").arg(room.id().to_string());
+            command.arg("--target").arg(build.id().to_string());
             command.args(["--user", "--mount", "--preserve-credentials", "--", "bwrap"]);
             command
         }
         None => Command::new("bwrap"),
     };
-    command.args(bwrap_args(copy, room.is_some(), env));
+    command.args(bwrap_args(copy, build.is_some(), env));
     if let Some((folder, at)) = shown {
         command.arg("--ro-bind").arg(folder).arg(at);
     }
@@ -226,7 +228,7 @@ fn sandboxed(
     if let Ok(path) = std::env::var("PATH") {
         command.env("PATH", path);
     }
-    let procs = room.map(Room::procs).unwrap_or_default();
+    let procs = build.map(BuildFolder::procs).unwrap_or_default();
     if !procs.is_empty() {
         // SAFETY: only open, write and close (async-signal-safe) on
         // strings made before the fork.
@@ -291,7 +293,7 @@ fn bwrap_args(copy: &Path, has_room: bool, env: &[(OsString, OsString)]) -> Vec<
         let path = Path::new("/etc").join(file);
         bind("--ro-bind-try", &path, &path);
     }
-    let homes = super::cargo::tool_homes();
+    let homes = tool_homes();
     if let Some(cargo) = &homes.cargo {
         for part in CARGO_HOME {
             bind("--ro-bind-try", &cargo.join(part), &cargo.join(part));
@@ -310,6 +312,27 @@ fn bwrap_args(copy: &Path, has_room: bool, env: &[(OsString, OsString)]) -> Vec<
         args.extend(["--setenv".into(), name.clone(), value.clone()]);
     }
     args
+}
+
+/// Where rustup and cargo keep the toolchain and the registry: read-only
+/// in the sandbox.
+pub struct Homes {
+    pub cargo: Option<PathBuf>,
+    pub rustup: Option<PathBuf>,
+}
+
+/// The cargo and rustup homes (their variables, else under HOME).
+pub fn tool_homes() -> Homes {
+    let home = std::env::var_os("HOME").map(PathBuf::from);
+    let find = |var: &str, folder: &str| {
+        std::env::var_os(var)
+            .map(PathBuf::from)
+            .or_else(|| home.as_ref().map(|h| h.join(folder)))
+    };
+    Homes {
+        cargo: find("CARGO_HOME", ".cargo"),
+        rustup: find("RUSTUP_HOME", ".rustup"),
+    }
 }
 
 #[cfg(test)]
@@ -356,7 +379,7 @@ mod tests {
             "HOME",
             "/grading/work/alice/target/scratch"
         ]));
-        // The reference's base copy (no room) is writable whole.
+        // The reference's base copy (no build folder of its own) is writable whole.
         let base: Vec<OsString> = bwrap_args(copy, false, &[]);
         let base: Vec<&OsStr> = base.iter().map(OsString::as_os_str).collect();
         let bind = [OsStr::new("--bind"), copy.as_os_str(), copy.as_os_str()];

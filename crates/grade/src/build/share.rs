@@ -24,7 +24,7 @@
 //!   the chapters are built anew for each student.
 //!
 //! Every shared file is *copied* into the student's target folder (a room
-//! of its own in the sandbox, `confine.rs`), never hard-linked: a test
+//! of its own in the sandbox, `sandbox/bwrap.rs`), never hard-linked: a test
 //! that overwrites one in place changes its own copy only, never the base
 //! build that the next student's copy comes from, nor the teacher's own
 //! `target/`. The base build's folder itself is never in a student's
@@ -35,6 +35,8 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 use cargo_metadata::{DependencyKind, Metadata};
+
+use workbook::handout::share::{How, share_matching};
 
 /// Packages and their crates, as the target folder names their files.
 #[derive(Debug, Clone, Default)]
@@ -103,9 +105,9 @@ impl Shared {
                 name.rsplit_once('-')
                     .is_some_and(|(s, _)| names.packages.contains(s))
             };
-            put_matching(&from.join("deps"), &to.join("deps"), in_deps)?;
+            share_matching(&from.join("deps"), &to.join("deps"), How::Copy, in_deps)?;
             for folder in [".fingerprint", "build"] {
-                put_matching(&from.join(folder), &to.join(folder), in_folders)?;
+                share_matching(&from.join(folder), &to.join(folder), How::Copy, in_folders)?;
             }
             Ok::<(), std::io::Error>(())
         };
@@ -182,57 +184,6 @@ fn names_its_paths(dir: &Path) -> bool {
 fn stem(name: &str) -> Option<&str> {
     let name = name.strip_prefix("lib").unwrap_or(name);
     name.rsplit_once('-').map(|(stem, _)| stem)
-}
-
-/// Copies each entry of `from` whose name is chosen (folders with all they
-/// hold) into `to`, unless it is there already.
-fn put_matching(from: &Path, to: &Path, chosen: impl Fn(&str) -> bool) -> std::io::Result<()> {
-    let Ok(entries) = std::fs::read_dir(from) else {
-        return Ok(());
-    };
-    std::fs::create_dir_all(to)?;
-    for entry in entries {
-        let entry = entry?;
-        let name = entry.file_name().to_string_lossy().into_owned();
-        if chosen(&name) {
-            put_tree(&entry.path(), &to.join(&name))?;
-        }
-    }
-    Ok(())
-}
-
-/// Copies a file, or a folder's files, from `from` to `to`, with their
-/// modification times (cargo compares a crate's build time with its
-/// dependencies'). A symlink is copied as a link (build scripts' outputs
-/// may hold one), never followed.
-fn put_tree(from: &Path, to: &Path) -> std::io::Result<()> {
-    let meta = std::fs::symlink_metadata(from)?;
-    if meta.is_dir() {
-        std::fs::create_dir_all(to)?;
-        for entry in std::fs::read_dir(from)? {
-            let entry = entry?;
-            put_tree(&entry.path(), &to.join(entry.file_name()))?;
-        }
-    } else if meta.is_symlink() {
-        if std::fs::symlink_metadata(to).is_err() {
-            std::os::unix::fs::symlink(std::fs::read_link(from)?, to)?;
-        }
-    } else if meta.is_file() && !to.exists() {
-        copy_keeping_time(from, to)?;
-    }
-    Ok(())
-}
-
-/// Copies a file and gives the copy the original's modification time. A
-/// fresh file: never a link to the original (`std::fs::copy` writes a new
-/// inode).
-pub fn copy_keeping_time(from: &Path, to: &Path) -> std::io::Result<()> {
-    std::fs::copy(from, to)?;
-    let modified = std::fs::metadata(from)?.modified()?;
-    std::fs::File::options()
-        .write(true)
-        .open(to)?
-        .set_modified(modified)
 }
 
 #[cfg(test)]

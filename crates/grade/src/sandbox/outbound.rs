@@ -1,6 +1,6 @@
 //! What leaves a student's sandbox besides the probe's values (which come
-//! on a pipe, `probe.rs`): the failure pictures their tests wrote, read
-//! beneath their build folder by `beneath.rs` (a regular file, no link on
+//! on a pipe, `judging/probe.rs`): the failure pictures their tests wrote, read
+//! beneath their build folder by `sandbox/beneath.rs` (a regular file, no link on
 //! the way, bounded, within a time), then written here into the grader's
 //! own report folder.
 
@@ -20,5 +20,5 @@ pub fn write(to: &Path, bytes: &[u8]) -> Result<(), String> {
     if let Some(parent) = to.parent() {
         std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
     }
-    crate::toolkit::image::write_atomically(to, bytes).map_err(|e| format!("{}: {e}", to.display()))
+    ch00_toolkit::image::write_atomically(to, bytes).map_err(|e| format!("{}: {e}", to.display()))
 }

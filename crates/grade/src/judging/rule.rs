@@ -1,5 +1,5 @@
 //! Judging an exercise by what the student's code computed, outside the
-//! sandbox: the probe's values and scenes (`probe.rs`), drawn from a seed
+//! sandbox: the probe's values and scenes (`judging/probe.rs`), drawn from a seed
 //! the teacher keeps, against the reference's.
 //!
 //! The rule, for each exercise the probe covers:
@@ -31,11 +31,13 @@ use grade_probe::{Picture, first_disagreement};
 use workbench::chapters::ChapterEntry;
 use workbench::compare::{Tolerance, Verdict as Compared, compare};
 
-use super::beneath::{Kind, clean_line};
-use super::cargo::Place;
-use super::probe::{self, Expected};
-use super::reference::{Reference, Settings};
-use super::result::{ChapterRun, Disagreement, JUDGED_BY_TESTS, JUDGED_BY_VALUES, Verdict};
+use crate::build::cargo::Place;
+use crate::judging::probe::{self, Expected};
+use crate::judging::reference::{Reference, Settings};
+use crate::judging::verdict::{
+    ChapterRun, Disagreement, JUDGED_BY_TESTS, JUDGED_BY_VALUES, Verdict,
+};
+use crate::sandbox::beneath::{Kind, clean_line};
 
 /// The verdicts of `chapter`'s exercises, from the tests' verdicts
 /// (`from_tests`, kept as feedback) and the probe run in `place`;
@@ -62,7 +64,7 @@ pub fn chapter(
         }
         return verdicts;
     }
-    // Built and kept before any of the student's code ran (`student.rs`);
+    // Built and kept before any of the student's code ran (`class/student.rs`);
     // never built now, after their tests had their target folder.
     let built = (run.probe_built.clone()).unwrap_or_else(|| Err("not built".to_owned()));
     if let Err(error) = built {
@@ -88,7 +90,7 @@ pub fn chapter(
 }
 
 /// Builds the grader's probe of `chapter` in `place` and keeps it where
-/// no later run can change it (`student.rs` does this before the
+/// no later run can change it (`class/student.rs` does this before the
 /// student's tests run); the first error if it fails.
 pub fn build_probe(
     place: &Place,
@@ -280,7 +282,7 @@ pub fn contradictions(verdicts: &[Verdict], runs: &[ChapterRun]) -> Vec<String> 
 /// test writes: a symlink (a folder swapped for a link), a FIFO, a socket,
 /// a device, a cargo setting. Each is a flag: the run touched more than
 /// its chapters' sources and their build. Walked beneath the folder, no
-/// link followed (`beneath.rs`).
+/// link followed (`sandbox/beneath.rs`).
 pub fn touched(place: &Place) -> Vec<String> {
     let walked = place
         .target_folder()

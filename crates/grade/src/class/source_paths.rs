@@ -6,7 +6,7 @@
 //! read from the source).
 //!
 //! The sandbox already hides what they would reach (the reference, other
-//! students, the teacher's files: `confine.rs`); the flag tells the
+//! students, the teacher's files: `sandbox/bwrap.rs`); the flag tells the
 //! teacher that someone tried. The scan reads the text, not a parse: a
 //! comment that shows such a line is flagged too, which a teacher sees at
 //! a glance.
@@ -23,16 +23,17 @@ pub fn reaching(text: &str, file: &Path, folder: &Path) -> Vec<String> {
     let line_of = |at: usize| text[..at].matches('\n').count() + 1;
     let here = file.parent().unwrap_or(Path::new(""));
     for (at, what, argument) in includes(text).into_iter().chain(paths(text)) {
-        let base = match what {
-            // A module's #[path] is relative to the folder of a mod.rs,
-            // lib.rs or main.rs, else to the folder named like the file.
-            "#[path]" if !is_mod_file(file) => here.join(file.file_stem().unwrap_or_default()),
-            _ => here.to_owned(),
-        };
+        // A module's #[path] is relative to the file's folder; inside an
+        // inline module of a file other than a mod.rs, lib.rs or main.rs,
+        // to the folder named like the file. Both are checked.
+        let mut bases = vec![here.to_owned()];
+        if what == "#[path]" && !is_mod_file(file) {
+            bases.push(here.join(file.file_stem().unwrap_or_default()));
+        }
         let why = match argument {
             None => Some("not a plain string, so where it leads cannot be read"),
             Some(path) if Path::new(&path).is_absolute() => Some("an absolute path"),
-            Some(path) if !within(&base.join(&path), folder) => {
+            Some(path) if bases.iter().any(|b| !within(&b.join(&path), folder)) => {
                 Some("outside the student's folder")
             }
             Some(_) => None,
@@ -194,7 +195,8 @@ mod tests {
         assert!(attr[0].contains("an absolute path"), "{attr:?}");
         assert!(flags("include!(\"/abs/other.rs\");")[0].contains("include!"));
         assert!(flags("let path = \"/etc\"; my_include(\"/x\");").is_empty());
-        // A non-mod file's #[path] is relative to the folder named like it.
+        // A non-mod file's #[path] is relative to its folder (or, in an
+        // inline module, to the folder named like it): both must stay in.
         let camera = Path::new("chapters/01-rays/src/camera.rs");
         let nested = reaching(
             "#[path = \"../x.rs\"]\nmod x;",
@@ -202,5 +204,11 @@ mod tests {
             Path::new("chapters/01-rays"),
         );
         assert!(nested.is_empty(), "{nested:?}");
+        let sideways = reaching(
+            "#[path = \"../../02-hits/src/lib.rs\"]\nmod other;",
+            camera,
+            Path::new("chapters/01-rays"),
+        );
+        assert!(sideways[0].contains("outside"), "{sideways:?}");
     }
 }

@@ -4,7 +4,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::beneath::clean_line;
+use crate::sandbox::beneath::clean_line;
 
 /// One student's grading.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
@@ -74,7 +74,7 @@ pub struct Picture {
     pub diff: Option<String>,
 }
 
-/// An exercise's verdict (the rule is `judge.rs`'s).
+/// An exercise's verdict (the rule is `judging/rule.rs`'s).
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Verdict {
     /// `ch03-lambert`.

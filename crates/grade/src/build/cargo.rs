@@ -9,8 +9,9 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::Arc;
 
-use super::beneath::Folder;
-use super::confine::{Room, confined, setup};
+use crate::sandbox::beneath::Folder;
+use crate::sandbox::build_folder::BuildFolder;
+use crate::sandbox::bwrap::{Setup, confined};
 use workbench::exercise::TAKE_OUT;
 
 /// Where a build or test run works: the copy, its target folder, and a
@@ -20,10 +21,12 @@ pub struct Place {
     pub copy: PathBuf,
     pub target: PathBuf,
     pub scratch: PathBuf,
-    /// A student's writable, size-limited target folder (`confine.rs`);
-    /// none for the reference's base copy, which is all writable, and
-    /// when grading without the sandbox.
-    room: Option<Arc<Room>>,
+    /// How the runs are confined (`sandbox/bwrap.rs`).
+    setup: Arc<Setup>,
+    /// A student's writable, size-limited build folder
+    /// (`sandbox/build_folder.rs`); none for the reference's base copy,
+    /// which is all writable, and when grading without the sandbox.
+    build: Option<Arc<BuildFolder>>,
     /// The grader's own folder of this student's probes, built before any
     /// of their code ran and kept where no student's run can write: shown
     /// read-only to the runs at [`PROBES`].
@@ -35,29 +38,30 @@ pub const PROBES: &str = "/raybook-probes";
 
 impl Place {
     /// The place of a copy: its target folder and scratch folder inside it.
-    pub fn of(copy: &Path) -> Place {
+    pub fn of(copy: &Path, setup: &Arc<Setup>) -> Place {
         Place {
+            setup: Arc::clone(setup),
             copy: copy.to_owned(),
             target: copy.join("target"),
             scratch: copy.join("target/scratch"),
-            room: None,
+            build: None,
             probes: None,
         }
     }
 
     /// The place of a student's copy: in the sandbox, the copy is
-    /// read-only and its target folder a room of its own (a tmpfs of
+    /// read-only and its target folder a build folder of its own (a tmpfs of
     /// `--disk`'s size), which ends when the last clone of the place is
     /// dropped.
-    pub fn student(copy: &Path, probes: &Path) -> Result<Place, String> {
-        let mut place = Place::of(copy);
+    pub fn student(copy: &Path, probes: &Path, setup: &Arc<Setup>) -> Result<Place, String> {
+        let mut place = Place::of(copy, setup);
         std::fs::create_dir_all(probes)
             .map_err(|e| format!("cannot create {}: {e}", probes.display()))?;
         place.probes = Some(probes.to_owned());
-        if setup().sandboxed {
+        if setup.sandboxed {
             std::fs::create_dir_all(&place.target)
                 .map_err(|e| format!("cannot create {}: {e}", place.target.display()))?;
-            place.room = Some(Arc::new(Room::new(&place.target)?));
+            place.build = Some(Arc::new(BuildFolder::new(&place.target, setup)?));
         }
         Ok(place)
     }
@@ -65,14 +69,14 @@ impl Place {
     /// Where the grader reads or writes `path`, a path of the runs (in the
     /// copy's target folder, which only the runs' namespace sees).
     pub fn outside(&self, path: &Path) -> PathBuf {
-        match &self.room {
+        match &self.build {
             Some(room) => room.outside(path),
             None => path.to_owned(),
         }
     }
 
     /// The student's build folder, opened once: everything grading reads
-    /// or makes in it after their code ran goes beneath it (`beneath.rs`).
+    /// or makes in it after their code ran goes beneath it (`sandbox/beneath.rs`).
     pub fn target_folder(&self) -> Result<Folder, String> {
         Folder::open(&self.outside(&self.target))
     }
@@ -97,7 +101,7 @@ impl Place {
     /// The probe of `chapter` as the runs see it: the one kept, or (the
     /// reference's base copy) the one built.
     pub fn probe(&self, chapter: &str) -> PathBuf {
-        match (&self.probes, &self.room) {
+        match (&self.probes, &self.build) {
             (None, _) => self.target.join("debug/grade-probe"),
             (Some(_), Some(_)) => Path::new(PROBES).join(chapter),
             (Some(kept), None) => kept.join(chapter),
@@ -106,7 +110,7 @@ impl Place {
 
     /// What the student's limits did, for their result's notes.
     pub fn notes(&self) -> Vec<String> {
-        self.room.as_ref().map(|r| r.notes()).unwrap_or_default()
+        self.build.as_ref().map(|r| r.notes()).unwrap_or_default()
     }
 
     /// `program` with `args` and the small environment (and `extra`), in
@@ -118,7 +122,7 @@ impl Place {
         (cwd, extra): (&Path, &[(OsString, OsString)]),
     ) -> Command {
         // Beneath the build folder, never through a link the runs left.
-        match &self.room {
+        match &self.build {
             Some(_) => {
                 if let Ok(target) = self.target_folder() {
                     target.make_folder("scratch");
@@ -133,9 +137,9 @@ impl Place {
         let probes = (self.probes.as_deref()).map(|p| (p, Path::new(PROBES)));
         confined(
             (&self.copy, cwd),
-            (self.room.as_deref(), probes),
+            (self.build.as_deref(), probes),
             (program, args),
-            &env,
+            (&env, self.setup.sandboxed),
         )
     }
 }
@@ -158,7 +162,7 @@ pub fn cargo_test(place: &Place, package: &str, build_only: bool, jobs: usize) -
 
 /// `cargo build -p <package> --offline --no-default-features --features
 /// <features>` in the copy: the grader's probe, built with the chapters'
-/// features it is asked for (see `probe.rs`).
+/// features it is asked for (see `judging/probe.rs`).
 pub fn cargo_build(place: &Place, package: &str, features: &[String], jobs: usize) -> Command {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut args: Vec<OsString> = ["build", "--offline", "--color", "never", "-p", package]
@@ -182,27 +186,6 @@ pub fn test_binary(place: &Place, binary: &Path, package_dir: &Path, take_out: &
     )
 }
 
-/// Where rustup and cargo keep the toolchain and the registry: read-only
-/// in the sandbox.
-pub struct Homes {
-    pub cargo: Option<PathBuf>,
-    pub rustup: Option<PathBuf>,
-}
-
-/// The cargo and rustup homes (their variables, else under HOME).
-pub fn tool_homes() -> Homes {
-    let home = std::env::var_os("HOME").map(PathBuf::from);
-    let find = |var: &str, folder: &str| {
-        std::env::var_os(var)
-            .map(PathBuf::from)
-            .or_else(|| home.as_ref().map(|h| h.join(folder)))
-    };
-    Homes {
-        cargo: find("CARGO_HOME", ".cargo"),
-        rustup: find("RUSTUP_HOME", ".rustup"),
-    }
-}
-
 /// Only what cargo and the tests need.
 fn small_environment(place: &Place) -> Vec<(OsString, OsString)> {
     let mut env: Vec<(OsString, OsString)> = Vec::new();
@@ -213,7 +196,7 @@ fn small_environment(place: &Place) -> Vec<(OsString, OsString)> {
     }
     // cargo and rustup find their homes under HOME: name them, so that
     // HOME can be the scratch folder.
-    let homes = tool_homes();
+    let homes = crate::sandbox::bwrap::tool_homes();
     for (var, value) in [("CARGO_HOME", homes.cargo), ("RUSTUP_HOME", homes.rustup)] {
         if let Some(value) = value {
             env.push((var.into(), value.into()));

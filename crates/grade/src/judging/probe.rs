@@ -17,11 +17,11 @@ use std::time::Duration;
 use grade_probe::{FORMAT, Picture, Probed, Values};
 use serde::Deserialize;
 
-use super::beneath::clean_line;
-use super::cargo::{Place, cargo_build, test_binary};
-use super::sandbox::{Limits, Ran, run};
-use crate::workspace::PROBE;
+use crate::build::cargo::{Place, cargo_build, test_binary};
+use crate::sandbox::beneath::clean_line;
+use crate::sandbox::limits::{Limits, Ran, run};
 use workbench::chapters::ChapterEntry;
+use workbook::workspace::PROBE;
 
 /// The most a probe's output may hold: far more than an honest run writes
 /// (about 100 KB for a chapter's scenes).
@@ -47,7 +47,7 @@ impl Expected {
 
 /// The probe's files in the reference at `root`, relative to it.
 pub fn files(root: &Path) -> Result<Vec<PathBuf>, String> {
-    let all = crate::workspace::workspace_files(root)?;
+    let all = workbook::workspace::workspace_files(root)?;
     Ok(all.into_iter().filter(|f| f.starts_with(PROBE)).collect())
 }
 

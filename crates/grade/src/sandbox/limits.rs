@@ -5,8 +5,8 @@
 //! limit; with limits on each process's memory (address space), on the
 //! size of a file and on core dumps, set with `setrlimit` in the child
 //! before it starts; with a cap on what they print. (The small
-//! environment is `cargo.rs`'s; the sandbox, the student's control group
-//! and size-limited build folder, `confine.rs`'s.)
+//! environment is `build/cargo.rs`'s; the sandbox, the student's control group
+//! and size-limited build folder, `sandbox/bwrap.rs`'s.)
 //!
 //! What the design still trusts is said plainly in `lib.rs`.
 

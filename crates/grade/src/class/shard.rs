@@ -5,7 +5,7 @@
 //! class and writes `DIR/shard-K-of-N.json`: the slice's results, and what
 //! they were graded with (the reference, the settings, the class's list of
 //! students). Its students' pictures go where a whole run puts them,
-//! `DIR/report/<student>/`. `grade --merge DIR… --out FINAL` (`merge.rs`)
+//! `DIR/report/<student>/`. `grade --merge DIR… --out FINAL` (`class/merge.rs`)
 //! reads every slice, refuses slices that do not belong together, and
 //! writes the outputs one run over the whole class writes, from the same
 //! results: the gradebook, the Gradescope files, JUnit, the HTML report.
@@ -33,10 +33,10 @@ use std::str::FromStr;
 
 use serde::{Deserialize, Serialize};
 
-use super::class::settings_key;
-use super::mapping::Tests;
-use super::reference::{Reference, Settings};
-use super::result::StudentResult;
+use crate::class::settings_key;
+use crate::judging::exercise_tests::Tests;
+use crate::judging::reference::{Reference, Settings};
+use crate::judging::verdict::StudentResult;
 
 /// The K-th of N slices of a class (counted from 1, as `--shard 1/8`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -101,7 +101,7 @@ fn stable_hash(bytes: &[u8]) -> u64 {
 }
 
 /// What slices must share to be merged: every slice's is compared with
-/// the others' as a whole, field by field (`merge.rs`), so a field added
+/// the others' as a whole, field by field (`class/merge.rs`), so a field added
 /// here is checked without more code.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct GradedWith {
@@ -138,7 +138,7 @@ pub struct ShardFile {
 /// (every student's folder name) grades with.
 pub fn graded_with(reference: &Reference, settings: &Settings, class: Vec<String>) -> GradedWith {
     GradedWith {
-        format: super::CACHE_FORMAT.to_owned(),
+        format: crate::judging::CACHE_FORMAT.to_owned(),
         reference: reference.record.label(),
         reference_hash: reference.hash.clone(),
         settings: settings_key(settings),
@@ -151,7 +151,7 @@ pub fn graded_with(reference: &Reference, settings: &Settings, class: Vec<String
 /// Writes the slice's file into `out` (atomically); its path.
 pub fn write(out: &Path, file: &ShardFile) -> Result<PathBuf, String> {
     let json = serde_json::to_string_pretty(file).map_err(|e| e.to_string())?;
-    super::report::write(&out.join(file.shard.file_name()), json + "\n")
+    crate::report::write(&out.join(file.shard.file_name()), json + "\n")
 }
 
 #[cfg(test)]

@@ -6,17 +6,19 @@
 use std::collections::BTreeMap;
 use std::hash::Hash;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 use std::time::Duration;
 
-use super::cargo::{Place, TestBinary, cargo_test, test_binaries};
-use super::digest::Digest;
-use super::mapping::{ExerciseTests, Tests, exercise_tests};
-use super::probe::{self, Expected};
-use super::sandbox::{Limits, run};
-use super::share::Shared;
-use crate::handout::record::Record;
-use crate::workspace::{teacher_only, workspace_files, workspace_regions};
+use crate::build::cargo::{Place, TestBinary, cargo_test, test_binaries};
+use crate::build::digest::Digest;
+use crate::build::share::Shared;
+use crate::judging::exercise_tests::{ExerciseTests, Tests, exercise_tests};
+use crate::judging::probe::{self, Expected};
+use crate::sandbox::bwrap::Setup;
+use crate::sandbox::limits::{Limits, run};
 use workbench::chapters::{self, ChapterEntry};
+use workbook::handout::record::Record;
+use workbook::workspace::{teacher_only, workspace_files, workspace_regions};
 
 /// How to prepare the reference and grade the students.
 #[derive(Debug, Clone)]
@@ -37,6 +39,8 @@ pub struct Settings {
     pub exclude: Vec<PathBuf>,
     /// The seed the probe draws the exercises' inputs and scenes from.
     pub seed: u64,
+    /// How the students' runs are confined (`sandbox/bwrap.rs`).
+    pub sandbox: Arc<Setup>,
 }
 
 /// The reference, prepared.
@@ -76,7 +80,8 @@ impl Reference {
         let hash = hash_of(root, &hashed)?;
         let record = Record::of_workspace(root);
         say(&format!("reference {}: {}", record.label(), root.display()));
-        let base = write_base(root, &hashed, &settings.cache.join("base"), &hash)?;
+        let base_dir = settings.cache.join("base");
+        let base = write_base(root, &hashed, (&base_dir, &settings.sandbox), &hash)?;
         let students = students_folders();
         let shared = Shared::of_workspace(&base.copy, &students)?;
         seed_dependencies(root, &base, &shared);
@@ -124,7 +129,7 @@ impl Reference {
     }
 
     /// The reference at `root` as the outputs need it, read but not built:
-    /// for joining the slices of a class graded against it (`merge.rs`),
+    /// for joining the slices of a class graded against it (`class/merge.rs`),
     /// with the `tests` they recorded. Its pictures are read from `root`
     /// itself, whose files the base copy holds.
     pub fn read(root: &Path, exclude: &[PathBuf], tests: Tests) -> Result<Self, String> {
@@ -136,7 +141,7 @@ impl Reference {
             root: root.to_owned(),
             hash: hash_of(root, &hashed)?,
             tests,
-            base: Place::of(root),
+            base: Place::of(root, &Arc::new(Setup::none())),
             shared: Shared::default(),
             probe_files,
             expected: Expected::default(),
@@ -207,7 +212,7 @@ fn same_manifest(root: &Path) -> Result<(), String> {
     let path = root.join("chapters/chapters.toml");
     let text = std::fs::read_to_string(&path)
         .map_err(|e| format!("{} is not a raybook workspace: {e}", root.display()))?;
-    let built_in: &str = include_str!("../../../chapters/chapters.toml");
+    let built_in: &str = include_str!("../../../../chapters/chapters.toml");
     if text != built_in {
         return Err(format!(
             "{} differs from the manifest this workbook was built with: run the \
@@ -249,7 +254,7 @@ fn hash_of(root: &Path, files: &BTreeMap<PathBuf, ()>) -> Result<String, String>
 fn write_base(
     root: &Path,
     files: &BTreeMap<PathBuf, ()>,
-    dir: &Path,
+    (dir, sandbox): (&Path, &Arc<Setup>),
     hash: &str,
 ) -> Result<Place, String> {
     let stamp = dir.join("target/reference-hash");
@@ -274,7 +279,7 @@ fn write_base(
     std::fs::create_dir_all(dir.join("target")).map_err(|e| e.to_string())?;
     std::fs::write(&stamp, hash).map_err(|e| format!("cannot write {}: {e}", stamp.display()))?;
     let dir = dir.canonicalize().map_err(|e| e.to_string())?;
-    Ok(Place::of(&dir))
+    Ok(Place::of(&dir, sandbox))
 }
 
 /// Writes `bytes` to `to` unless it holds them already.

@@ -8,7 +8,7 @@ use std::path::Path;
 
 use serde::Deserialize;
 
-use super::mapping::ExerciseTests;
+use crate::judging::exercise_tests::ExerciseTests;
 
 /// The points of each exercise.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -46,7 +46,7 @@ impl Points {
             None => {
                 let path = out.join("points.toml");
                 if !path.exists() {
-                    crate::toolkit::image::write_atomically(&path, template(exercises).as_bytes())
+                    ch00_toolkit::image::write_atomically(&path, template(exercises).as_bytes())
                         .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
                 }
                 path

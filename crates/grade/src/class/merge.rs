@@ -1,4 +1,4 @@
-//! `grade --merge DIR… --out FINAL`: the slices of a class (`shard.rs`)
+//! `grade --merge DIR… --out FINAL`: the slices of a class (`class/shard.rs`)
 //! joined into the outputs one run over the whole class writes.
 //!
 //! The slices must belong together, or the gradebook would mix gradings
@@ -15,12 +15,13 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use super::beneath::Folder;
-use super::class::slugs;
-use super::reference::Reference;
-use super::result::StudentResult;
-use super::shard::{Shard, ShardFile};
-use super::{GradeArgs, points, report};
+use crate::args::GradeArgs;
+use crate::class::shard::{Shard, ShardFile};
+use crate::class::slugs;
+use crate::judging::reference::Reference;
+use crate::judging::verdict::StudentResult;
+use crate::report::{self, points};
+use crate::sandbox::beneath::Folder;
 
 /// A slice as read from its folder.
 struct Slice {
@@ -78,7 +79,7 @@ fn read_slices(dirs: &[PathBuf]) -> Result<Vec<Slice>, String> {
         let dir = dir
             .canonicalize()
             .map_err(|e| format!("--merge {}: {e}", dir.display()))?;
-        // A slice is read as a student's file is (`beneath.rs`): a slice
+        // A slice is read as a student's file is (`sandbox/beneath.rs`): a slice
         // that is a link, a FIFO or a device, or too large, is refused in
         // the grader's words, without waiting and without quoting it.
         let folder = Folder::open(&dir)?;
