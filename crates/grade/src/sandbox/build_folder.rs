@@ -12,8 +12,8 @@ use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 
-use crate::sandbox::bwrap::Setup;
 use crate::sandbox::cgroup::Group;
+use crate::sandbox::setup::Setup;
 
 /// A student's writable build folder: a tmpfs of `--disk`'s size mounted
 /// on it in a user and mount namespace of its own, which a small process

@@ -53,47 +53,11 @@ use std::process::{Command, Stdio};
 
 use crate::sandbox::build_folder::BuildFolder;
 use crate::sandbox::cgroup::{self, Parent};
+pub use crate::sandbox::setup::Setup;
 
 /// What every output says of a student graded without the sandbox.
 pub const UNSANDBOXED: &str = "graded WITHOUT the sandbox (--unsafe-no-sandbox): the \
      student's code ran as the teacher, with the teacher's files and network";
-
-/// How grading runs the students' commands.
-#[derive(Debug, Clone)]
-pub struct Setup {
-    /// In bubblewrap (false: `--unsafe-no-sandbox`).
-    pub sandboxed: bool,
-    /// The size of a student's writable build folder, in bytes.
-    pub disk: u64,
-    /// The memory of a student's processes together, in bytes.
-    pub memory: u64,
-    /// The number of a student's processes (and threads) together.
-    pub pids: u64,
-    /// Where students' control groups are made, or why none can be.
-    pub cgroups: Result<Parent, String>,
-}
-
-impl Setup {
-    /// No sandbox: for what runs no student's code (a merge, unit tests).
-    pub fn none() -> Setup {
-        Setup {
-            sandboxed: false,
-            disk: 0,
-            memory: 0,
-            pids: 0,
-            cgroups: Err("not started".to_owned()),
-        }
-    }
-
-    /// What of it changes a student's result (the cache's key): the
-    /// sandbox or not, and the limits; not where control groups live.
-    pub fn key(&self) -> Setup {
-        Setup {
-            cgroups: Err(String::new()),
-            ..*self
-        }
-    }
-}
 
 /// Chooses how the students' commands run, and checks that the sandbox
 /// starts (an error says why not and how to fix it). Once per process.

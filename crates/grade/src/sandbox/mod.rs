@@ -67,3 +67,4 @@ pub mod bwrap;
 pub mod cgroup;
 pub mod limits;
 pub mod outbound;
+pub mod setup;
