@@ -277,8 +277,10 @@ pub fn hash_files(
 
 /// What a student changed outside their own code, all of which grading
 /// puts back from the reference: the `flags` (tests, pictures, the
-/// manifest, Cargo files, build scripts: what changes the verdict) and
-/// the `notes` (any other file; symlinks, never followed).
+/// manifest, Cargo files, build scripts: what changes the verdict; a file
+/// the handout never held; what is not a file; sources that reach out)
+/// and the `notes` (another of the reference's files edited or removed;
+/// symlinks, never followed).
 #[derive(Debug, Default, Clone, PartialEq, Eq)]
 pub struct Changes {
     pub flags: Vec<String>,
@@ -293,7 +295,9 @@ pub fn changes(
     reference: &Reference,
 ) -> Result<Changes, String> {
     let mut changes = Changes::default();
-    let mut reaching = Vec::new();
+    // Flagged whatever the path: what reaches out, what is not a file,
+    // what the handout never held.
+    let mut flagged = Vec::new();
     let mut note = |path: &Path, what: &str| {
         let line = format!("{what} {}", shown(path));
         if is_protected(path) {
@@ -309,20 +313,22 @@ pub fn changes(
                 continue;
             }
             Entry::Other(what) => {
-                reaching.push(format!("{what} at {}: never opened", shown(path)));
+                flagged.push(format!("{what} at {}: never opened", shown(path)));
                 continue;
             }
             Entry::File(_) => {}
         }
         if reference.is_students(path) {
-            reaching.extend(reaching_out(submission, path)?);
+            flagged.extend(reaching_out(submission, path)?);
             continue;
         }
         if path == Path::new(RECORD_FILE) {
             continue;
         }
         match reference.file(path) {
-            None => note(path, "added"),
+            // Not the reference's and not the student's own code: flagged,
+            // since nothing of a handout's is there (never copied in).
+            None => flagged.push(format!("added {}", shown(path))),
             Some(_) if path == Path::new("Cargo.lock") => {
                 if !same_lock(&submission.read(path)?, &root_lock(reference))? {
                     note(path, "edited")
@@ -337,7 +343,7 @@ pub fn changes(
             note(path, "removed");
         }
     }
-    changes.flags.extend(reaching);
+    changes.flags.extend(flagged);
     Ok(changes)
 }
 
