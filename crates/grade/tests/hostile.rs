@@ -560,6 +560,10 @@ fn a_probe_that_swaps_its_folders_for_links_gets_nothing_through_them() {
         flagged("target/snapshot-failures/01-rays: a symlink"),
         "{flags:?}"
     );
+    assert!(
+        flagged("ch01-at: its probe's record is not one the probe writes"),
+        "{flags:?}"
+    );
     // The teacher's pictures it led to are unchanged (`nothing_outside…`)
     // and none of them reached the report (`a_symlink_or_a_fifo…`).
 }
@@ -657,6 +661,13 @@ fn code_before_main_or_a_second_main_earns_nothing_and_stops_no_one() {
     let Some(graded) = graded() else { return };
     let early = &graded.rows["j-early"];
     assert_eq!(score(early), ("0", "3"), "the forged values: {early:?}");
+    let forged = flags(early);
+    assert!(
+        forged
+            .iter()
+            .any(|f| f.contains("is not one the probe writes")),
+        "{forged:?}"
+    );
     let settings = &graded.rows["k-settings"];
     assert_eq!(
         (score(settings), settings["compiled"].as_str()),

@@ -143,6 +143,10 @@ fn values(v: &mut Verdict, outcome: probe::Outcome, expected: &Expected) {
         v.message = Some("no values: its probe wrote none for it".to_owned());
         return;
     };
+    // The probe writes every drawn input as it was given: a record with
+    // other inputs, or another number of them, was written by someone else.
+    v.forged = theirs.cases.len() != ours.cases.len()
+        || (ours.cases.iter().zip(&theirs.cases)).any(|(a, b)| a.input != b.input);
     match first_disagreement(ours, &theirs) {
         None => {
             (v.passed, v.agreed) = (true, v.cases);
@@ -264,6 +268,13 @@ pub fn contradictions(verdicts: &[Verdict], runs: &[ChapterRun]) -> Vec<String> 
                 v.id
             ));
         }
+    }
+    for v in verdicts.iter().filter(|v| v.forged) {
+        flags.push(format!(
+            "{}: its probe's record is not one the probe writes (other inputs than the \
+             drawn ones, or another number of them): written by the student's code?",
+            v.id
+        ));
     }
     for run in runs {
         let never = run.unfinished > 0

@@ -99,6 +99,11 @@ pub struct Verdict {
     /// The first failing test's message (the chapter's own tests, run for
     /// their feedback), when it is judged by its values.
     pub feedback: Option<String>,
+    /// Its probe's record was not one the probe writes: other inputs than
+    /// the drawn ones, or another number of them (a record forged by the
+    /// student's code, which may write to the probe's pipe).
+    #[serde(default)]
+    pub forged: bool,
 }
 
 impl Verdict {

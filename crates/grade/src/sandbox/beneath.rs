@@ -56,6 +56,8 @@ pub enum Refused {
     /// A path that names a parent, the root, or a character grading
     /// refuses in a name (see [`clean_name`]).
     BadName,
+    /// A file where a folder was asked for.
+    NotAFolder,
     /// Another error of the system, in its words (no file content).
     Other(String),
 }
@@ -69,6 +71,7 @@ impl std::fmt::Display for Refused {
             Refused::TooLarge(size) => write!(f, "{size} bytes, more than grading reads: refused"),
             Refused::TooSlow => write!(f, "not read in time: refused"),
             Refused::BadName => write!(f, "a name grading does not read: refused"),
+            Refused::NotAFolder => write!(f, "not a folder: refused"),
             Refused::Other(e) => write!(f, "cannot be read ({e})"),
         }
     }
@@ -79,7 +82,7 @@ impl Refused {
         match errno {
             Errno::NOENT => Refused::Missing,
             Errno::LOOP | Errno::XDEV => Refused::Link,
-            Errno::NOTDIR => Refused::Kind("not a folder on the way"),
+            Errno::NOTDIR => Refused::NotAFolder,
             e => Refused::Other(e.to_string()),
         }
     }
@@ -292,7 +295,9 @@ fn open_beneath(
     if !by_parts {
         match rustix::fs::openat2(dir, relative, flags, Mode::empty(), resolve) {
             Err(Errno::NOSYS) | Err(Errno::PERM) => {}
-            Err(Errno::AGAIN) => return open_by_parts(dir, relative, flags),
+            // A race with a rename, or a link that O_DIRECTORY reports as
+            // "not a folder": the fallback tells which part it was.
+            Err(Errno::AGAIN) | Err(Errno::NOTDIR) => return open_by_parts(dir, relative, flags),
             result => return result.map_err(Refused::of),
         }
     }
@@ -408,7 +413,14 @@ mod tests {
             assert_eq!(read("../teacher/x.json"), Err(Refused::BadName));
             assert_eq!(read("/etc/passwd"), Err(Refused::BadName));
             assert_eq!(read("probe/none"), Err(Refused::Missing));
-            assert!(room.folder(Path::new("swapped")).is_err());
+            assert_eq!(
+                room.folder(Path::new("swapped")).unwrap_err(),
+                Refused::Link
+            );
+            assert_eq!(
+                room.folder(Path::new("probe/own.json")).unwrap_err(),
+                Refused::NotAFolder
+            );
             assert_eq!(read("probe/own.json").unwrap(), b"mine");
         });
     }

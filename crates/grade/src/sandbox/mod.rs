@@ -25,10 +25,30 @@
 //!   them too;
 //! * the shared build artefacts are copies in the student's own target
 //!   folder, never links to the base build or the teacher's (`build/share.rs`);
-//! * what leaves the sandbox is checked: failure pictures are copied out
-//!   only if they are regular files, of a bounded size, read within a
-//!   time (`sandbox/outbound.rs`); anything else in their place is refused and
-//!   flagged.
+//! * the probe's values leave on a channel no student can redirect: the
+//!   writing end of a pipe the grader opened and handed to the probe as
+//!   descriptor 3 (`judging/probe.rs`), never a file. The student's code
+//!   is linked into the probe and may write to the pipe too, so what
+//!   comes out is data, checked against the grader's own seed, exercise
+//!   and format, and worth only what its values are against the
+//!   reference's. The reference's values stay in the grader's memory;
+//! * the probes are built before any of the student's code runs, kept in
+//!   the grader's own folder and shown to their runs read-only; they run
+//!   after every chapter's tests, so nothing a probe is given (the seed,
+//!   the drawn inputs) or writes reaches a run whose output a student
+//!   sees, and what a student sees of the judging names a disagreement by
+//!   its number only (`judging/verdict.rs`, `Verdict::for_student`);
+//! * everything the grader reads of a student's folder or build folder
+//!   (the handout record, the sources, the failure pictures, what a run
+//!   left) is opened beneath a folder it opened itself, with no symlink
+//!   anywhere on the way, and only if it is a regular file, of a bounded
+//!   size, read within a time (`sandbox/beneath.rs`); what is refused is
+//!   said in the grader's words, never quoted, and flagged. Nothing
+//!   outside the sandbox is created, listed, read or removed by a path
+//!   that passes through a folder a student can write;
+//! * what reaches the teacher's terminal and files is on one line, without
+//!   control or bidirectional characters (`beneath::clean_line`), and one
+//!   student's failure of any kind stops no other's grading.
 //!
 //! What the design still trusts, and why that is acceptable:
 //! * the kernel and bubblewrap: a student who escapes a user namespace has
@@ -60,6 +80,26 @@
 //! * with `--unsafe-no-sandbox`, everything: the code runs as the teacher,
 //!   reads and writes what the teacher can and reaches the network. It is
 //!   for a class one trusts, and every output says it was used.
+//!
+//! ## The attacks tried, and what each gets
+//!
+//! Each is a student of the hostile corpus (`tests/hostile.rs`,
+//! `tests/hostile_judging.rs`), graded in CI.
+//!
+//! | attack | what it gets, and why |
+//! |---|---|
+//! | printing `test … ok` for every test; a lookup table of the tests' values; the reference picture stored and overwritten | only its honest points: points come from the probe's values on inputs drawn at grading time; the overwrite is flagged |
+//! | `#[path]`/`include!` of the reference's solution or a classmate's file | does not compile (not in its sandbox), flagged |
+//! | a `setsid` child, Unix sockets outside, overwriting shared artefacts in place | dies with the run (PID namespace), hears nothing (network namespace), touches only its own copies |
+//! | files over the disk, children over the memory | held by the build folder's size and the control group, noted |
+//! | in the probe, `target/probe` swapped for a link to the base copy's outputs; `snapshot-failures/01-rays` for a link to a teacher's folder | nothing: the values come on the pipe, the reference's are in memory, the pictures are read beneath the build folder with no link on the way; both links flagged |
+//! | a record of its own written on the pipe (with the right seed and exercise) | what its values are worth: nothing, unless they are right |
+//! | `.raybook-handout.toml` a link to a secret, `/dev/stdin`, `/dev/zero`; a 1 GiB sparse file; a FIFO among its sources | graded on its honest work, each flagged; nothing quoted, waited for or read whole |
+//! | a probe that panics with its arguments (the seed) | that exercise loses its points; the student sees "your code panicked", never the text |
+//! | a folder named with a line break and a forged row; files and pictures named with ESC and CR | one line everywhere, the picture refused and flagged |
+//! | an `.init_array` constructor that forges a record before `main`; a `#[global_allocator]` | the forged values are worth nothing; the allocator changes nothing |
+//! | a `#[no_mangle] main` in place of every binary's entry point; `[patch]` in the Cargo.toml; a proc-macro crate added | the link fails (two `main`s), so nothing of it runs; the Cargo files are the reference's, the macro never built; flagged |
+//! | a hostile slice given to `--merge` (a link, a FIFO, not a slice) | refused at once, never quoted (`class/merge.rs`); a slice itself is the teacher's own output, so whoever can write one can write the gradebook |
 
 pub mod beneath;
 pub mod build_folder;

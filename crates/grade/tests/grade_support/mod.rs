@@ -99,7 +99,8 @@ fn records(text: &str) -> Vec<Vec<String>> {
 }
 
 /// Every entry under `dir` (symlinks not followed): its path, kind, mode,
-/// modification time, and its bytes' hash or where it leads.
+/// modification time, and its bytes' hash (a regular file up to 64 MiB),
+/// its kind and size (anything else), or where it leads.
 pub fn class_fingerprint(dir: &Path) -> Vec<String> {
     use std::hash::{Hash, Hasher};
     let mut found = Vec::new();
@@ -113,6 +114,10 @@ pub fn class_fingerprint(dir: &Path) -> Vec<String> {
             } else if meta.is_dir() {
                 folders.push(path.clone());
                 "dir".to_owned()
+            } else if !meta.is_file() || meta.len() > 64 << 20 {
+                // A FIFO would block a read, a sparse gigabyte is slow:
+                // their kind, size and time say whether they changed.
+                format!("{:?} {} bytes", meta.file_type(), meta.len())
             } else {
                 let mut hasher = std::hash::DefaultHasher::new();
                 std::fs::read(&path).unwrap().hash(&mut hasher);
