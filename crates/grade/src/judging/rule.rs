@@ -420,4 +420,43 @@ mod tests {
         pictures(&ours, Err("timed out".into()), &mut verdicts, &[]);
         assert!(!verdicts[0].passed, "a scene not drawn differs");
     }
+
+    /// Values that agree while the exercise's own tests reach its `todo!`
+    /// (code that knows when it is graded), a forged record, and tests that
+    /// never finish are flagged; an honest `todo!` (its values disagree
+    /// too) and honest failures are not.
+    #[test]
+    fn contradictions_are_flagged_for_the_teacher_and_honest_work_is_not() {
+        let todo = |id: &str| Some(format!("test t: not yet implemented: {id}: hint"));
+        let mut knows = verdict("ch01-at", true);
+        knows.feedback = todo("ch01-at");
+        let mut honest_todo = verdict("ch01-frame", false);
+        honest_todo.feedback = todo("ch01-frame");
+        let mut forged = verdict("ch01-ray-through", false);
+        forged.forged = true;
+        let mut failing = verdict("ch02-plane", true);
+        failing.feedback = Some("test u: expected 1, found 2".to_owned());
+        let endless = ChapterRun {
+            folder: "03-lambert".to_owned(),
+            compiled: true,
+            trouble: Some("the tests timed out after 60 s (an endless loop?): killed".to_owned()),
+            ..ChapterRun::default()
+        };
+        let finished = ChapterRun {
+            folder: "01-rays".to_owned(),
+            compiled: true,
+            ..ChapterRun::default()
+        };
+        let flags = contradictions(&[knows, honest_todo, forged, failing], &[endless, finished]);
+        assert_eq!(flags.len(), 3, "{flags:?}");
+        assert!(
+            flags[0].starts_with("ch01-at: its values agree"),
+            "{flags:?}"
+        );
+        assert!(
+            flags[1].starts_with("ch01-ray-through: its probe's record"),
+            "{flags:?}"
+        );
+        assert_eq!(flags[2], "03-lambert: its tests never finished");
+    }
 }
