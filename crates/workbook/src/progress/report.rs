@@ -226,14 +226,24 @@ pub fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) ->
     // The exercise not written yet that the text asks for first (of those
     // whose todo! a test met, if any did).
     match next {
-        Some((file, line, region)) => format!(
-            "next: chapter {}: exercise {} in {}:{line}: {}\n      \
-             read {readme}, write it, then run `{command}`",
-            chapter.number(),
-            region.id,
-            file.display(),
-            region.hint
-        ),
+        Some((file, line, region)) => {
+            // A test that fails other than at a todo! fails in code
+            // already written: its answer is there too.
+            let written_fails = (output.panics.iter())
+                .any(|(_, message)| !message.starts_with("not yet implemented: "));
+            let answers = match written_fails {
+                true => answers_line(&row.exercises),
+                false => String::new(),
+            };
+            format!(
+                "next: chapter {}: exercise {} in {}:{line}: {}\n      \
+                 read {readme}, write it, then run `{command}`{answers}",
+                chapter.number(),
+                region.id,
+                file.display(),
+                region.hint
+            )
+        }
         None => {
             let answers = answers_line(&row.exercises);
             let what = match lead(output, None) {
@@ -373,6 +383,36 @@ mod tests {
         );
         assert!(text.contains("β is not divided by |N|"), "{text}");
         assert!(!text.contains("812 pixels"), "{text}");
+    }
+
+    #[test]
+    fn a_written_exercise_that_fails_beside_an_open_one_has_its_answer_offered() {
+        let exercises = "    // EXERCISE(ch01-at): a\n    self.origin\n    // END EXERCISE\n}\nfn g() {\n\
+                         // EXERCISE(ch01-frame): f\n    todo!()\n    // END EXERCISE\n";
+        let mut chapter = row("01-rays", None, exercises);
+        chapter.output = Some(TestOutput {
+            failed: 2,
+            failed_tests: vec!["a_ray_walks".into(), "the_frame".into()],
+            panics: vec![
+                ("a_ray_walks".into(), "r(2.5) is not 2.5 along".into()),
+                (
+                    "the_frame".into(),
+                    "not yet implemented: ch01-frame: f".into(),
+                ),
+            ],
+            ..TestOutput::default()
+        });
+        let text = report(&[chapter.clone()], Path::new("/w"));
+        assert!(text.contains("exercise ch01-frame"), "{text}");
+        assert!(
+            text.contains("`workbook hint ch01-at --level 4` shows the answer"),
+            "{text}"
+        );
+        // Only todo!s fail: nothing written fails, no answer is offered.
+        let output = chapter.output.as_mut().unwrap();
+        output.panics.remove(0);
+        let text = report(&[chapter], Path::new("/w"));
+        assert!(!text.contains("--level 4"), "{text}");
     }
 
     #[test]
