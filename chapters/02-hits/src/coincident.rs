@@ -10,12 +10,14 @@ use crate::{Hit, Ray, hit_at, intersect};
 ///
 /// Two surfaces whose hits lie within their error bounds of each other
 /// cannot be told apart by the numbers: which t comes out smaller is
-/// rounding, and changes from pixel to pixel. The hit point is off its
-/// surface by up to e (chapter 2's `Hit::error`) along the normal n, which
-/// is e/|n·rd| along the ray; the other surface's point as much again (2e),
-/// and t itself carries the rounding of the ray's numbers, a few ε of
-/// |r0| + t, divided by |n·rd| for the same reason. README, section
-/// *Coincident surfaces*.
+/// rounding, and changes from pixel to pixel. Each coordinate of the hit
+/// point is off by up to e (chapter 2's `Hit::error`), about e along the
+/// normal n (√3·e at most), which is e/|n·rd| along the ray; the other
+/// surface's point as much again (2e, both from the nearest hit's e: the
+/// other's is not known before it is hit), and t itself carries the
+/// rounding of the ray's numbers, a few ε of |r0| + t, divided by |n·rd|
+/// for the same reason. A margin of the rounding's size, not a proof.
+/// README, section *Coincident surfaces*.
 pub fn coincidence_window(hit: &Hit, ray: &Ray) -> f32 {
     let rounding = 8.0 * f32::EPSILON * (ray.origin.abs().max_element() + hit.t);
     let cosine = hit.normal.dot(ray.direction).abs().max(f32::MIN_POSITIVE);

@@ -4,6 +4,7 @@ mod coincident;
 mod cone;
 mod plane;
 mod sphere;
+mod stable;
 mod triangle;
 
 pub mod ray_tree;
@@ -12,9 +13,8 @@ pub use ch01_rays::{Camera, Ray, render, scene_files, toolkit, workbench};
 pub use coincident::{coincidence_window, coincident_range, first_coincident};
 pub use cone::{cone_point, intersect_cone};
 pub use plane::{intersect_plane, plane_point};
-pub use sphere::{
-    Quadratic, intersect_sphere, nearest_root, sphere_point, sphere_roots, sphere_roots_abc,
-};
+pub use sphere::{intersect_sphere, nearest_root, sphere_point, sphere_roots_abc};
+pub use stable::{Quadratic, sphere_roots};
 pub use triangle::{
     barycentrics, intersect_triangle, smooth_normal, triangle_by_plane, triangle_hit_point,
     triangle_normal, triangle_plane_t, triangle_point,

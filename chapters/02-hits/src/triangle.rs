@@ -126,7 +126,8 @@ pub fn intersect_triangle(
 ///
 /// In f64 every product of two f32 inputs is exact, so N, p₀ − r0 and the
 /// quotient are exact to about 10⁻¹⁶ of their size, and t to far below its
-/// rounding to f32, whatever the size of the triangle.
+/// rounding to f32 unless the corners are some 10⁶ times farther from the
+/// ray's origin than t (the bound of [`triangle_hit_point`] says by how much).
 pub fn triangle_plane_t([p0, p1, p2]: [Vec3; 3], ray: &Ray) -> f64 {
     let [p0, p1, p2] = [p0, p1, p2].map(|p| p.as_dvec3());
     let origin = ray.origin.as_dvec3();
@@ -174,14 +175,15 @@ pub fn triangle_point([p0, p1, p2]: [Vec3; 3], (alpha, beta): (f32, f32)) -> Vec
 
 /// The point where `ray` meets the plane of the triangle (p₀, p₁, p₂), and
 /// e, a bound on how far it lies off that plane: as accurate as the ray
-/// allows, however far the corners are.
+/// allows, plus a term that grows with the corners' distance a million
+/// times slower than the corners' own rounding.
 ///
 /// Two ways to get the point, each with its bound:
 /// * the barycentric mean [`triangle_point`] of the corners: off the plane
 ///   by a few units in the last place of the *corners'* coordinates, 8ε·|p|∞
 ///   with p the largest corner (pbrt, 4th ed., section 6.8.4, "Bounding
 ///   Intersection Point Error", bounds it so). A floor whose corners are 10⁶
-///   away from the point seen gets a point up to 0.5 off the floor, and a
+///   away from the point seen gets a point up to 0.95 off the floor, and a
 ///   shadow ray offset as far.
 /// * the ray's own r(t) = r0 + t·rd, with t from the plane in f64
 ///   ([`triangle_plane_t`]), which is exact to about 10⁻¹⁶ of its size, so the

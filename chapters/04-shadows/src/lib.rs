@@ -35,14 +35,13 @@ pub enum ShadowStart {
 ///   [`offset_origin`] for a ray leaving towards the light (just off the
 ///   surface, on the light's side); `ShadowStart::HitPoint`, at p itself
 ///   (the chapter's demonstration of acne).
-/// * Its direction is l, of length 1, so t measures distance along it. It
-///   points from the surface to the light, never the other way.
-/// * t_max is the t at which the ray, from the origin it actually has,
-///   arrives at the light's position: finite, never ∞ (a blocker beyond the
-///   light would shadow the point), and not 1 (the direction is a unit
-///   vector, not the whole way to the light). A hit at 0 < t < t_max then
-///   stands between the surface and the light; one at t ≥ t_max is beyond
-///   the light and blocks nothing.
+/// * Its direction has length 1, so t measures distance along it, and it
+///   goes from the surface towards the light.
+/// * t_max is the t at which this ray arrives at the light's position. A
+///   hit at 0 < t < t_max then stands between the surface and the light;
+///   one at t ≥ t_max is beyond the light and blocks nothing. (Why it is
+///   neither ∞ nor 1, and from which point it is measured, is the README's
+///   question.)
 pub fn shadow_ray(surface: &Surface, incoming: &Incoming, origin: ShadowStart) -> (Ray, f32) {
     // EXERCISE(ch04-shadow-ray): the ray from the surface towards the light, starting where `origin` says, and the t at which it reaches the light
     crate::workbench::exercise::solution_begins("ch04-shadow-ray");
@@ -112,10 +111,10 @@ impl World for [Object] {
 /// * A light that casts no shadows (`incoming.casts_shadows` is false) is
 ///   free: `true`, with no ray traced and nothing counted.
 /// * Any other light costs exactly one shadow ray, the one [`shadow_ray`]
-///   makes, counted once in `stats.shadow`. It is asked of `world.any_hit`
-///   over the whole way from its origin to the light, and no further. The
-///   light is free (`true`) if nothing is hit there, blocked (`false`) if
-///   something is.
+///   makes, counted once in `stats.shadow`, and asked of `world.any_hit`.
+///   The light is free (`true`) if nothing stands between the shadow ray's
+///   origin and the light, blocked (`false`) if something does. (Which
+///   interval to ask about is the README's question.)
 pub fn light_is_free(
     world: &(impl World + ?Sized),
     surface: &Surface,

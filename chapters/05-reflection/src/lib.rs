@@ -171,8 +171,9 @@ pub fn trace(
 ///   ends).
 /// * A ray it lets go on is counted once by its kind
 ///   ([`Secondary::count`]) and traced with [`trace`] at its own path. What
-///   it sees counts in the sum with the ray's own weight only: the weights
-///   before it are applied on the way back up the recursion.
+///   it sees counts in the sum times a weight: which one, the ray's own or
+///   its path's, is the README's question (*Recursion, not a loop*), and
+///   the tests check the answer.
 /// * Black if no ray goes on.
 pub fn follow_secondary_rays(
     tracer: &impl Whitted,

@@ -80,16 +80,14 @@ impl Whitted for Tracer {
     /// * `depth` is the ray's depth (1 for the first bounce, as in chapter
     ///   5) and `weight` the weight of its whole path, up to and including
     ///   its own.
-    /// * `false` if the path has had its `max_depth` bounces already (a ray
-    ///   deeper than `max_depth`); else `false` if its weight is below the
-    ///   threshold ([`below_threshold`] with `min_weight`); else `true`. A
-    ///   ray exactly at `max_depth` may go on, and so may a weight exactly
-    ///   at the threshold.
+    /// * `false` if the path has had its `max_depth` bounces already
+    ///   (`max_depth = 1` follows exactly one bounce, 0 none) or if its
+    ///   weight is below the threshold `min_weight` ([`below_threshold`]);
+    ///   else `true`.
     /// * Each `false` ends a path and is counted once, by the criterion that
-    ///   ended it: `stats.ended_max_depth` or `stats.ended_threshold`. A ray
-    ///   that fails both is counted by depth only, the criterion asked
-    ///   first. A `true` counts nothing here (the caller counts the rays it
-    ///   traces).
+    ///   ended it: `stats.ended_max_depth` or `stats.ended_threshold`; the
+    ///   depth is asked first. A `true` counts nothing here (the caller
+    ///   counts the rays it traces).
     fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
         // EXERCISE(ch07-may-trace): a ray may go on unless its depth is beyond max_depth or its path's weight is below the threshold; count each path ended by the criterion that ended it (the depth first)
         crate::workbench::exercise::solution_begins("ch07-may-trace");

@@ -69,13 +69,17 @@ fn shadow_ray() -> crate::svg::Drawn {
     {
         svg.text(beyond + xy(-14.0, 26.0 + 18.0 * i as f64), line, NOTE.end());
     }
-    let along = r0 + (light - r0) * 0.45;
+    // High on the ray: lower down, the leader line to the magnified view
+    // crosses it.
+    let along = r0 + (light - r0) * 0.7;
     svg.text(
         along + xy(14.0, 4.0),
         "t_max: at the light",
         LABEL.colour(LIGHT).bold(),
     );
-    svg.text(r0 + xy(10.0, -8.0), "t = 0", NOTE.colour(INK));
+    // Left of the ray, which leaves up and to the left: on the right the
+    // leader line runs.
+    svg.text(r0 + xy(-20.0, -4.0), "t = 0", NOTE.colour(INK).end());
     svg.dot(p, INK);
     svg.text(p + xy(0.0, 22.0), "p", LABEL.bold().middle());
     // The blocked point: a ball on the way.
@@ -147,7 +151,9 @@ fn inset(svg: &mut Svg, p: DVec2, towards: DVec2) {
         "e",
         LABEL.colour(NORMAL).bold(),
     );
-    svg.text(centre + xy(-radius + 8.0, -radius + 4.0), "magnified", NOTE);
+    // Beside the circle, up and to its left, clear of its edge.
+    let corner = centre + xy(-1.0, -1.0) * (radius * std::f64::consts::FRAC_1_SQRT_2 + 8.0);
+    svg.text(corner, "magnified", NOTE.end());
     let notes = [
         "p is off by up to e;",
         "from p, the ray hits",

@@ -46,7 +46,7 @@ fn reflection_split() -> crate::svg::Drawn {
          the same angle θ on the other side of n. On the right, d_i is split into its \
          part along n, (d_i·n) n, and its part across n, across = d_i − (d_i·n) n. The \
          mirror keeps the part across and reverses the part along: \
-         d_o = across − along = d_i − 2 (d_i·n) n.",
+         d_o = across − along.",
     );
     svg.text(
         xy(20.0, 28.0),
@@ -122,11 +122,7 @@ fn reflection_split() -> crate::svg::Drawn {
         "across = d_i − (d_i·n) n",
         LABEL.colour(FRAME),
     );
-    svg.fact(
-        xy(20.0, 362.0),
-        "d_o = across − along = d_i − 2 (d_i·n) n",
-        LABEL.bold(),
-    );
+    svg.fact(xy(20.0, 362.0), "d_o = across − along", LABEL.bold());
     svg.finish()
 }
 

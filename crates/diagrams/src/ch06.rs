@@ -209,7 +209,9 @@ fn critical_angle_diagram() -> crate::svg::Drawn {
         match refract(up, -Vec3::Y, GLASS) {
             Some(out) => {
                 let out = v2(out);
-                let length = if critical_ray { 150.0 } else { 105.0 };
+                // The grazing ray runs along the surface: short, so that
+                // it ends before the next ray's hit point.
+                let length = if critical_ray { 50.0 } else { 105.0 };
                 svg.arrow(hit, hit + xy(out.x, -out.y) * length, REFRACT, 2.2);
             }
             None => {
@@ -234,8 +236,8 @@ fn critical_angle_diagram() -> crate::svg::Drawn {
         NOTE.colour(REFRACT),
     );
     svg.text(
-        // High enough that the subscript clears the grazing ray.
-        xy(370.0, surface - 20.0),
+        // Above the grazing ray, high enough that the subscript clears it.
+        xy(282.0, surface - 14.0),
         "grazing at θ_c",
         NOTE.colour(REFRACT),
     );
@@ -266,7 +268,7 @@ fn schlick_curve() -> crate::svg::Drawn {
         "Schlick's approximation for glass",
         &format!(
             "The share R that glass reflects by Schlick's approximation, with \
-             R₀ = (0.5 / 2.5)² = 0.04 head-on. Entering glass from air, plotted against \
+             R₀ = 0.04 head-on. Entering glass from air, plotted against \
              the angle outside, it stays near 0.04 until about 60° and rises to 1 at 90°. \
              Leaving glass, plotted against the angle inside and computed with the angle \
              outside as the text says, it rises to 1 at the critical angle, {}°, and total \
@@ -335,7 +337,7 @@ fn schlick_curve() -> crate::svg::Drawn {
     svg.dot(at(0.0, r0), INK);
     svg.fact(
         at(0.0, r0) + xy(10.0, -10.0),
-        &format!("R₀ = (0.5 / 2.5)² = {}", fixed(r0, 2)),
+        &format!("R₀ = {}", fixed(r0, 2)),
         NOTE.colour(INK),
     );
     svg.text(

@@ -31,6 +31,17 @@ fn readme(chapter: &str) -> String {
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()))
 }
 
+/// The chapter's text and its answers (`answers.md`, which `workbook hint
+/// ID --level 4` shows after an attempt): a diagram's worked numbers may be
+/// stated in either.
+fn chapter_text(chapter: &str) -> String {
+    let answers = workspace_root()
+        .join("chapters")
+        .join(chapter)
+        .join("answers.md");
+    readme(chapter) + "\n" + &std::fs::read_to_string(answers).unwrap_or_default()
+}
+
 /// The README's prose: without its images (whose alt text describes the
 /// diagrams, so it would always agree with them), and with every run of
 /// white space made one space (the text wraps its lines where a diagram
@@ -75,7 +86,8 @@ fn unstated_facts(diagram: &Diagram, readme: &str) -> Vec<String> {
         }
         if !readme.contains(fact.as_str()) {
             problems.push(format!(
-                "{}: the picture shows {fact:?}, which chapters/{}/README.md does not state",
+                "{}: the picture shows {fact:?}, which chapters/{}/README.md (nor its answers.md) \
+                 does not state",
                 diagram.name, diagram.chapter
             ));
         }
@@ -192,7 +204,7 @@ fn same_file(a: &Path, b: &Path) -> bool {
 fn the_numbers_a_diagram_shows_are_the_ones_its_chapter_states() {
     let problems: Vec<String> = all()
         .iter()
-        .flat_map(|d| unstated_facts(d, &prose(&readme(d.chapter))))
+        .flat_map(|d| unstated_facts(d, &prose(&chapter_text(d.chapter))))
         .collect();
     assert!(problems.is_empty(), "{}", problems.join("\n"));
 }

@@ -47,11 +47,28 @@ pub fn failure_dir(chapter: &str) -> PathBuf {
 /// Asserts that `image` matches the reference picture `name` of `chapter`,
 /// within the snapshot tolerance for its size.
 pub fn assert_image(chapter: &str, name: &str, image: &Image) {
+    assert_image_beside(chapter, name, image, &[]);
+}
+
+/// A test of a chapter whose message names a mistake more precisely than a
+/// picture can: its name, and the test's function.
+pub type Precise = (&'static str, fn());
+
+/// [`assert_image`], and when the picture differs, the precise tests
+/// `beside` are run again here, each caught if it panics: the message
+/// names those that fail, with what they say, before the count of pixels.
+/// A count of pixels says that something is wrong; their messages say
+/// what, and libtest's order of reports is not ours to set.
+pub fn assert_image_beside(chapter: &str, name: &str, image: &Image, beside: &[Precise]) {
     let actual = image.to_rgb8();
     let reference = std::fs::read(reference_path(chapter, name)).ok();
+    let explained = |report: String| match failing_beside(beside) {
+        failing if failing.is_empty() => report,
+        failing => format!("{}\n{report}", failing.join("\n")),
+    };
     let bytes = match reference
         .as_deref()
-        .map(|r| check(chapter, name, r, &actual))
+        .map(|r| check(chapter, name, r, &actual).map_err(explained))
     {
         Some(Ok(())) => reference.expect("read above"),
         Some(Err(report)) if !is_reference() => panic!(
@@ -71,6 +88,25 @@ pub fn assert_image(chapter: &str, name: &str, image: &Image) {
     }, {
         insta::assert_binary_snapshot!(&format!("{name}.png"), bytes);
     });
+}
+
+/// The tests of `beside` that fail, each as a line that names it and
+/// what it says (its panic message's first line).
+fn failing_beside(beside: &[Precise]) -> Vec<String> {
+    let mut failing = Vec::new();
+    for (test, run) in beside {
+        let Err(panic) = std::panic::catch_unwind(run) else {
+            continue;
+        };
+        let message = (panic.downcast_ref::<String>().map(String::as_str))
+            .or_else(|| panic.downcast_ref::<&str>().copied())
+            .unwrap_or("(no message)");
+        failing.push(format!(
+            "the test {test} fails beside this picture, and says what is wrong (read it first): {}",
+            message.lines().next().unwrap_or("")
+        ));
+    }
+    failing
 }
 
 /// Is this the reference workspace, which holds the teacher's files (the

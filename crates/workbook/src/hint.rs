@@ -9,10 +9,17 @@
 //! the heading above that line is shown. Level 3 runs the chapter's tests
 //! and names those that wait for the exercise (they reach its `todo!`), or
 //! that fail while it is written, with the file that holds each test.
+//! Level 4 is the answer, from the chapter's `answers.md` (its section
+//! `## ID`), offered only once the student has tried: the exercise's body
+//! is no longer the handout's `todo!` and the chapter compiles (its tests
+//! ran at level 3). The answers are in the handout, so this is no secret
+//! kept: it is the order of things. The chapter's text derives and asks,
+//! and the answer comes after an attempt, not beside the question.
 
 use std::path::Path;
 use std::process::ExitCode;
 
+use crate::progress::TestOutput;
 use crate::regions::Region;
 use crate::workbench::chapters::{self, ChapterEntry};
 use crate::workspace::{current_workspace, workspace_regions};
@@ -25,8 +32,10 @@ pub struct HintArgs {
     pub id: String,
 
     /// How much help: 1, a nudge (what to compute); 2, the section of the
-    /// chapter's text that derives it; 3, the tests that check it.
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=3))]
+    /// chapter's text that derives it; 3, the tests that check it; 4, the
+    /// answer, once you have tried (your code is in place of the `todo!`
+    /// and compiles).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=4))]
     pub level: u8,
 }
 
@@ -82,19 +91,85 @@ pub fn hint(args: &HintArgs) -> Result<String, String> {
         text += &derivation(&root, chapter, region)?;
     }
     if args.level >= 3 {
-        text += &tests_of(&root, chapter, region)?;
+        let output = run_tests(&root, chapter)?;
+        text += &tests_of(&root, chapter, region, &output);
+        text += &match (args.level, offered(region, &output)) {
+            (3, Ok(())) => format!(
+                "\nthe answer, now that you have tried: workbook hint {} --level 4\n",
+                region.id
+            ),
+            (3, Err(_)) => format!(
+                "\nthe answer (workbook hint {} --level 4) comes once you have tried: your \
+                 code in place of the todo!, compiling\n",
+                region.id
+            ),
+            (_, Ok(())) => answer(&root, chapter, region, &output)?,
+            (_, Err(why)) => format!("\n{why}\n"),
+        };
     }
-    match args.level {
-        1 | 2 => {
-            text += &format!(
-                "\nmore help: workbook hint {} --level {}\n",
-                region.id,
-                args.level + 1
-            )
-        }
-        _ => {}
+    if args.level < 3 {
+        text += &format!(
+            "\nmore help: workbook hint {} --level {}\n",
+            region.id,
+            args.level + 1
+        );
     }
     Ok(text)
+}
+
+/// Is the answer to `region` offered, given the chapter's test run
+/// `output`? Once the student has tried: its body is no longer the
+/// handout's `todo!`, and the chapter compiles. Else why not yet.
+pub fn offered(region: &Region, output: &TestOutput) -> Result<(), String> {
+    if region.is_open() {
+        return Err(format!(
+            "the answer to {} comes after your attempt: write it in place of its todo! \
+             (levels 1 to 3 say what it must do); once it compiles, this shows the answer \
+             to compare with",
+            region.id
+        ));
+    }
+    if let Some(error) = &output.compile_error {
+        return Err(format!(
+            "your attempt at {} does not compile yet ({error}): the answer comes once it does",
+            region.id
+        ));
+    }
+    Ok(())
+}
+
+/// The answer to `region` from its chapter's `answers.md`, after an
+/// attempt whose tests ran with `output`.
+fn answer(
+    root: &Path,
+    chapter: &ChapterEntry,
+    region: &Region,
+    output: &TestOutput,
+) -> Result<String, String> {
+    let path = chapter.path().join(ANSWERS);
+    let answers = std::fs::read_to_string(root.join(&path))
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let answer = answer_in(&answers, &region.id)
+        .ok_or_else(|| format!("{} holds no section `## {}`", path.display(), region.id))?;
+    let verdict = if output.passed_all() {
+        "every test of the chapter passes: your code is an answer; the text's, to compare"
+    } else {
+        "you have tried; the answer"
+    };
+    Ok(format!("\n{verdict} ({}):\n\n{answer}", path.display()))
+}
+
+/// The file beside a chapter's README that holds its exercises' answers.
+pub const ANSWERS: &str = "answers.md";
+
+/// The section of an answers file for exercise `id`: the lines under the
+/// heading `## id` up to the next heading of that level.
+pub fn answer_in(answers: &str, id: &str) -> Option<String> {
+    let heading = format!("## {id}");
+    let mut lines = answers.lines().skip_while(|l| l.trim_end() != heading);
+    lines.next()?;
+    let section: Vec<&str> = lines.take_while(|l| !l.starts_with("## ")).collect();
+    Some(section.join("\n").trim().to_owned() + "\n")
 }
 
 /// The contract of the function that holds the exercise whose marker is
@@ -172,13 +247,18 @@ pub fn section_with(markdown: &str, marker: &str) -> Option<String> {
     (!sections.is_empty()).then(|| sections.join("\n"))
 }
 
-/// The chapter's tests that check `region`: those that reach its `todo!`
-/// while it is not written; once it is, those that fail, with their messages.
-fn tests_of(root: &Path, chapter: &ChapterEntry, region: &Region) -> Result<String, String> {
+/// `cargo test -p` of the chapter, read.
+fn run_tests(root: &Path, chapter: &ChapterEntry) -> Result<TestOutput, String> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    let package = chapter.package();
     let out = std::process::Command::new(cargo)
-        .args(["test", "-p", &package, "--no-fail-fast", "--color", "never"])
+        .args([
+            "test",
+            "-p",
+            &chapter.package(),
+            "--no-fail-fast",
+            "--color",
+            "never",
+        ])
         .current_dir(root)
         .output()
         .map_err(|e| format!("cannot run cargo: {e}"))?;
@@ -187,9 +267,16 @@ fn tests_of(root: &Path, chapter: &ChapterEntry, region: &Region) -> Result<Stri
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     );
-    let parsed = crate::progress::parse(&text);
-    if let Some(error) = parsed.compile_error {
-        return Ok(format!("\n{package} does not compile yet: {error}\n"));
+    Ok(crate::progress::parse(&text))
+}
+
+/// The chapter's tests that check `region` (from their run `parsed`):
+/// those that reach its `todo!` while it is not written; once it is, those
+/// that fail, with their messages.
+fn tests_of(root: &Path, chapter: &ChapterEntry, region: &Region, parsed: &TestOutput) -> String {
+    let package = chapter.package();
+    if let Some(error) = &parsed.compile_error {
+        return format!("\n{package} does not compile yet: {error}\n");
     }
     let todo = format!("{}:", region.id);
     let waiting: Vec<&(String, String)> = parsed
@@ -205,7 +292,7 @@ fn tests_of(root: &Path, chapter: &ChapterEntry, region: &Region) -> Result<Stri
             parsed.panics.iter().collect(),
         )
     } else {
-        return Ok(format!("\nevery test of {package} passes\n"));
+        return format!("\nevery test of {package} passes\n");
     };
     let mut text = format!("\n{intro}:\n");
     for (test, message) in tests {
@@ -218,7 +305,7 @@ fn tests_of(root: &Path, chapter: &ChapterEntry, region: &Region) -> Result<Stri
             message.lines().next().unwrap_or("")
         );
     }
-    Ok(text)
+    text
 }
 
 /// The test file under `dir` that defines `fn name`.
@@ -240,7 +327,45 @@ fn defined_in(dir: &Path, name: &str) -> Option<std::path::PathBuf> {
 
 #[cfg(test)]
 mod tests {
-    use super::{contract, section_with};
+    use super::{answer_in, contract, offered, section_with};
+    use crate::progress::TestOutput;
+    use crate::regions::regions;
+
+    #[test]
+    fn the_answer_comes_after_an_attempt_that_compiles() {
+        let source = |body: &str| {
+            let text = format!(
+                "fn f() -> f32 {{\n    // EXERCISE(ch03-lambert): l\n{body}\n    // END EXERCISE\n}}\n"
+            );
+            regions(&text).unwrap().remove(0)
+        };
+        let failing = TestOutput {
+            failed: 1,
+            ..TestOutput::default()
+        };
+        let open = source("    todo!(\"ch03-lambert: l\")");
+        let why = offered(&open, &failing).unwrap_err();
+        assert!(why.contains("after your attempt"), "{why}");
+        let tried = source("    0.5");
+        assert_eq!(offered(&tried, &failing), Ok(()));
+        let broken = TestOutput {
+            compile_error: Some("error[E0308]: mismatched types".into()),
+            ..TestOutput::default()
+        };
+        let why = offered(&tried, &broken).unwrap_err();
+        assert!(why.contains("does not compile yet"), "{why}");
+    }
+
+    #[test]
+    fn an_answer_is_the_section_under_its_id() {
+        let answers = "# Answers\n\nintro\n\n## ch03-spot\n\nS(s) = ...\n\n### aside\n\nmore\n\n## ch03-lambert\n\nk_d ...\n";
+        assert_eq!(
+            answer_in(answers, "ch03-spot").unwrap(),
+            "S(s) = ...\n\n### aside\n\nmore\n"
+        );
+        assert_eq!(answer_in(answers, "ch03-lambert").unwrap(), "k_d ...\n");
+        assert_eq!(answer_in(answers, "ch03-light-loop"), None);
+    }
 
     #[test]
     fn the_nudge_shows_the_contract_of_the_function_around_the_exercise() {

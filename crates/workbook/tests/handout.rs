@@ -393,6 +393,43 @@ fn every_exercise_has_a_hint_then_its_derivation_and_never_its_code() {
     );
 }
 
+/// The answer comes after an attempt (`workbook hint ID --level 4`), not
+/// beside the question: every exercise has one in its chapter's
+/// `answers.md`, and no line of it stands in the chapter's text or in the
+/// contract that `hint` level 1 shows.
+#[test]
+fn every_exercise_has_an_answer_and_neither_its_text_nor_its_contract_shows_it() {
+    for (file, line, region) in workspace_regions(&root()).unwrap() {
+        let id = region.id.as_str();
+        let chapter = exercise_chapters()
+            .into_iter()
+            .find(|c| Some(c.number()) == region.chapter())
+            .unwrap();
+        let folder = root().join(chapter.path());
+        let answers = std::fs::read_to_string(folder.join(workbook::hint::ANSWERS)).unwrap();
+        let answer = workbook::hint::answer_in(&answers, id)
+            .unwrap_or_else(|| panic!("{id}: its chapter's answers.md has no `## {id}`"));
+        assert!(answer.trim().len() > 80, "{id}: a short answer: {answer}");
+        let readme = std::fs::read_to_string(folder.join("README.md")).unwrap();
+        let source = std::fs::read_to_string(root().join(&file)).unwrap();
+        let contract = workbook::hint::contract(&source, line).unwrap();
+        for shown in answer
+            .lines()
+            .map(str::trim)
+            .filter(|l| l.chars().count() >= 24)
+        {
+            assert!(
+                !readme.contains(shown),
+                "{id}: its answer stands in the chapter's README: {shown:?}"
+            );
+            assert!(
+                !contract.contains(shown),
+                "{id}: its answer stands in its contract: {shown:?}"
+            );
+        }
+    }
+}
+
 #[test]
 fn a_handout_can_leave_the_first_chapters_solved() {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("handout-solved");

@@ -7,7 +7,7 @@ use ch02_hits::{Ray, closest_hit, closest_hit_by};
 use super::{INF, scene};
 
 #[test]
-fn closest_hit_is_the_nearest_object() {
+pub(crate) fn closest_hit_is_the_nearest_object() {
     let s = scene();
     // Straight down from high above the red sphere: it is above the floor.
     let ray = Ray::new(Vec3::new(-1.0, 10.0, 0.0), Vec3::new(0.0, -1.0, 0.0));
@@ -73,7 +73,7 @@ fn the_nearest_object_wins_wherever_it_is_in_the_list() {
 }
 
 #[test]
-fn a_later_object_replaces_the_hit_only_if_it_is_nearer() {
+pub(crate) fn a_later_object_replaces_the_hit_only_if_it_is_nearer() {
     // Two spheres, the nearer first in the list: a fake `intersect` meets the
     // one at x = 5 at t = 4, the one at x = 10 at t = 9 (inside the range it
     // is asked about), and records the t_max it was given each time.

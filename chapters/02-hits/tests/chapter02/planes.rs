@@ -6,7 +6,7 @@ use ch02_hits::{Ray, intersect_plane};
 use super::INF;
 
 #[test]
-fn plane_hit_solves_n_dot_x_plus_d() {
+pub(crate) fn plane_hit_solves_n_dot_x_plus_d() {
     // The plane y = 1 is n = (0, 1, 0), d = −1.
     let ray = Ray::new(Vec3::new(0.0, 5.0, 0.0), Vec3::new(0.0, -1.0, 0.0));
     assert_eq!(
@@ -28,7 +28,7 @@ fn plane_hit_solves_n_dot_x_plus_d() {
 }
 
 #[test]
-fn a_plane_behind_the_ray_is_not_hit() {
+pub(crate) fn a_plane_behind_the_ray_is_not_hit() {
     // Going up from y = 5, the plane y = 1 is behind: t = −4.
     let ray = Ray::new(Vec3::new(0.0, 5.0, 0.0), Vec3::Y);
     assert_eq!(
@@ -54,7 +54,7 @@ fn a_ray_leaving_the_plane_does_not_hit_it_at_t_0() {
 }
 
 #[test]
-fn a_ray_parallel_to_the_plane_misses_it() {
+pub(crate) fn a_ray_parallel_to_the_plane_misses_it() {
     for (y, place) in [(5.0, "above"), (-5.0, "below"), (1.0, "in")] {
         let parallel = Ray::new(Vec3::new(0.0, y, 0.0), Vec3::new(0.6, 0.0, 0.8));
         let hit = intersect_plane(Vec3::Y, -1.0, &parallel, 0.0, INF);

@@ -6,7 +6,7 @@ use ch02_hits::{Ray, intersect_sphere, nearest_root, sphere_roots, sphere_roots_
 use super::INF;
 
 #[test]
-fn the_lectures_worked_example() {
+pub(crate) fn the_lectures_worked_example() {
     // A ray from (0, 2, 0) straight down onto the unit sphere at the origin:
     // a = 1, b = −4, c = 3, so t² − 4t + 3 = 0.
     let ray = Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(0.0, -1.0, 0.0));
@@ -28,7 +28,7 @@ fn the_lectures_worked_example() {
 }
 
 #[test]
-fn a_sphere_away_from_the_origin_with_radius_2() {
+pub(crate) fn a_sphere_away_from_the_origin_with_radius_2() {
     // Centre m = (1, −2, 3), radius ρ = 2, a ray from (1, 4, 3) straight
     // down: r0 − m = (0, 6, 0), so a = 1, b = −12, c = 36 − 4 = 32 and
     // t² − 12t + 32 = 0: t = 4 and t = 8.
@@ -50,7 +50,7 @@ fn a_sphere_away_from_the_origin_with_radius_2() {
 }
 
 #[test]
-fn a_tangent_ray_touches_the_sphere_once() {
+pub(crate) fn a_tangent_ray_touches_the_sphere_once() {
     // Along x, exactly 1 above the unit sphere's centre: a = 1, b = −10,
     // c = 25, and the discriminant b² − 4ac = 100 − 100 is exactly 0.
     let ray = Ray::new(Vec3::new(-5.0, 1.0, 0.0), Vec3::X);
@@ -68,7 +68,7 @@ fn a_tangent_ray_touches_the_sphere_once() {
 }
 
 #[test]
-fn a_ray_past_the_sphere_misses() {
+pub(crate) fn a_ray_past_the_sphere_misses() {
     let ray = Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, 0.0, 0.0));
     let roots = sphere_roots_abc(Vec3::ZERO, 1.0, &ray);
     assert_eq!(
@@ -91,7 +91,7 @@ fn the_roots_of_a_line_are_behind_as_well_as_ahead() {
 }
 
 #[test]
-fn the_nearest_root_ahead_is_the_hit() {
+pub(crate) fn the_nearest_root_ahead_is_the_hit() {
     let down = Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::NEG_Y);
     assert_eq!(
         intersect_sphere(Vec3::ZERO, 1.0, &down, 0.0, INF),

@@ -21,7 +21,7 @@ fn down_z(x: f32, y: f32) -> Ray {
 }
 
 #[test]
-fn the_triangle_worked_example() {
+pub(crate) fn the_triangle_worked_example() {
     // e₁ = (4, 0, 0), e₂ = (0, 2, 0), N = e₁ × e₂ = (0, 0, 8), n = (0, 0, 1),
     // d = −n·p₀ = 1. From (2, 0.5, 3) along −z: t = −(3 + 1)/(−1) = 4 and
     // x = (2, 0.5, −1); w = x − p₀ = (2, 0.5, 0), w × e₂ = (0, 0, 4) and
@@ -38,7 +38,7 @@ fn the_triangle_worked_example() {
 }
 
 #[test]
-fn the_triangle_has_its_edges_and_corners() {
+pub(crate) fn the_triangle_has_its_edges_and_corners() {
     for ((x, y), (alpha, beta), place) in [
         ((2.0, 1.0), (0.5, 0.5), "on the edge p₁p₂, where α + β = 1"),
         ((1.0, 0.0), (0.25, 0.0), "on the edge p₀p₁, where β = 0"),
@@ -58,7 +58,7 @@ fn the_triangle_has_its_edges_and_corners() {
 }
 
 #[test]
-fn points_outside_the_triangle_are_missed() {
+pub(crate) fn points_outside_the_triangle_are_missed() {
     for ((x, y), place) in [
         ((2.5, 1.0), "beyond the edge p₁p₂ (α + β = 1.125 > 1)"),
         ((1.0, -0.5), "below the edge p₀p₁ (β < 0)"),
@@ -77,7 +77,7 @@ fn points_outside_the_triangle_are_missed() {
 }
 
 #[test]
-fn the_triangle_is_hit_from_both_sides_but_not_from_behind_the_origin() {
+pub(crate) fn the_triangle_is_hit_from_both_sides_but_not_from_behind_the_origin() {
     let back = Ray::new(Vec3::new(2.0, 0.5, -5.0), Vec3::Z);
     assert_eq!(
         triangle_by_plane(CORNERS, &back, 0.0, INF),
@@ -103,7 +103,7 @@ fn the_triangle_is_hit_from_both_sides_but_not_from_behind_the_origin() {
 }
 
 #[test]
-fn a_ray_parallel_to_the_triangle_misses_it() {
+pub(crate) fn a_ray_parallel_to_the_triangle_misses_it() {
     for (z, place) in [(0.0, "above"), (-1.0, "in")] {
         let ray = Ray::new(Vec3::new(-3.0, 0.5, z), Vec3::X);
         let hit = triangle_by_plane(CORNERS, &ray, 0.0, INF);

@@ -125,7 +125,7 @@ fn lambert_is_right_at(surface: &Surface) {
 }
 
 #[test]
-fn ambient_light_adds_albedo_times_its_colour_once() {
+pub(crate) fn ambient_light_adds_albedo_times_its_colour_once() {
     // Two ambient lights, point lights whose reflection is zero: only the
     // ambient light is left.
     let lights = format!("{AMBIENTS}{LIGHT_A}{LIGHT_B}");
@@ -140,7 +140,7 @@ fn ambient_light_adds_albedo_times_its_colour_once() {
 }
 
 #[test]
-fn the_lights_add_up_channel_by_channel() {
+pub(crate) fn the_lights_add_up_channel_by_channel() {
     let lights = format!("{AMBIENTS}{LIGHT_A}{LIGHT_B}");
     let ambient = ALBEDO * Vec3::new(0.15, 0.25, 0.35);
     let a = ALBEDO;
@@ -155,7 +155,7 @@ fn the_lights_add_up_channel_by_channel() {
 }
 
 #[test]
-fn a_light_that_is_not_visible_adds_nothing() {
+pub(crate) fn a_light_that_is_not_visible_adds_nothing() {
     let lights = format!("{LIGHT_A}{LIGHT_B}");
     // Light B (the one off to the side, +x) is blocked.
     let got = light_at_floor(&lights, |_, i| i.direction.x <= 0.0, None);
@@ -166,7 +166,7 @@ fn a_light_that_is_not_visible_adds_nothing() {
 }
 
 #[test]
-fn a_light_behind_the_surface_is_skipped_whatever_reflect_says() {
+pub(crate) fn a_light_behind_the_surface_is_skipped_whatever_reflect_says() {
     // A `reflect` that does not clamp: n·l itself, negative for light C.
     let lights = format!("{LIGHT_A}{LIGHT_C}");
     let n_dot_l: Reflect = &|s, i| Color::splat(s.normal.dot(i.direction));
@@ -179,7 +179,7 @@ fn a_light_behind_the_surface_is_skipped_whatever_reflect_says() {
 }
 
 #[test]
-fn visible_is_asked_only_about_lights_that_could_add_something() {
+pub(crate) fn visible_is_asked_only_about_lights_that_could_add_something() {
     let lights = format!("{AMBIENTS}{LIGHT_A}{LIGHT_B}{LIGHT_C}{SPOT_AWAY}");
     let mut asked = Vec::new();
     light_at_floor(

@@ -6,7 +6,7 @@ use ch03_lambert::{Incoming, Surface, closest_hit, lambert};
 use super::{ALBEDO, close, floor_facing, floor_with, render, sphere_lit_at};
 
 #[test]
-fn cosine_law_head_on_versus_sixty_degrees() {
+pub(crate) fn cosine_law_head_on_versus_sixty_degrees() {
     // The centre pixel sees the point (0, 0, 1) whose normal is +z.
     let head_on = render(&sphere_lit_at(0.0)).get(20, 20);
     let at_sixty = render(&sphere_lit_at(60.0)).get(20, 20);
@@ -25,7 +25,7 @@ fn cosine_law_head_on_versus_sixty_degrees() {
 }
 
 #[test]
-fn a_light_behind_the_surface_adds_nothing() {
+pub(crate) fn a_light_behind_the_surface_adds_nothing() {
     let behind = render(&sphere_lit_at(120.0)).get(20, 20);
     assert_eq!(
         behind,

@@ -2,7 +2,7 @@
 
 use ch03_lambert::toolkit::Vec3;
 use ch03_lambert::toolkit::scene::Light;
-use ch03_lambert::workbench::snapshot::assert_image;
+use ch03_lambert::workbench::snapshot::{Precise, assert_image_beside};
 use ch03_lambert::{CHAPTER, Camera, closest_hit};
 
 use super::{render, sphere_lit_at};
@@ -58,8 +58,45 @@ fn colours_are_clamped_when_written() {
     assert_eq!(image.to_rgb8().get_pixel(20, 20).0, [255, 255, 255]);
 }
 
+/// The tests whose messages say more than a picture's count of pixels: a
+/// snapshot that differs names those of them that fail beside it.
+const PRECISE: &[Precise] = &[
+    (
+        "spot_factor_is_one_inside_zero_outside_and_smooth_between",
+        super::spot::spot_factor_is_one_inside_zero_outside_and_smooth_between,
+    ),
+    (
+        "cosine_law_head_on_versus_sixty_degrees",
+        super::lambert::cosine_law_head_on_versus_sixty_degrees,
+    ),
+    (
+        "a_light_behind_the_surface_adds_nothing",
+        super::lambert::a_light_behind_the_surface_adds_nothing,
+    ),
+    (
+        "ambient_light_adds_albedo_times_its_colour_once",
+        super::direct_light::ambient_light_adds_albedo_times_its_colour_once,
+    ),
+    (
+        "the_lights_add_up_channel_by_channel",
+        super::direct_light::the_lights_add_up_channel_by_channel,
+    ),
+    (
+        "a_light_that_is_not_visible_adds_nothing",
+        super::direct_light::a_light_that_is_not_visible_adds_nothing,
+    ),
+    (
+        "a_light_behind_the_surface_is_skipped_whatever_reflect_says",
+        super::direct_light::a_light_behind_the_surface_is_skipped_whatever_reflect_says,
+    ),
+    (
+        "visible_is_asked_only_about_lights_that_could_add_something",
+        super::direct_light::visible_is_asked_only_about_lights_that_could_add_something,
+    ),
+];
+
 #[test]
 fn snapshot_default() {
     let scene = CHAPTER.default_scene().unwrap().with_size(160, 120);
-    assert_image("03-lambert", "default", &render(&scene));
+    assert_image_beside("03-lambert", "default", &render(&scene), PRECISE);
 }

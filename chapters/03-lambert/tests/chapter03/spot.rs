@@ -7,7 +7,7 @@ use ch03_lambert::{CHAPTER, Camera, Ray, closest_hit, spot_factor};
 use super::render;
 
 #[test]
-fn spot_factor_is_one_inside_zero_outside_and_smooth_between() {
+pub(crate) fn spot_factor_is_one_inside_zero_outside_and_smooth_between() {
     let axis = Vec3::new(0.0, -1.0, 0.0);
     let at = |deg: f32| {
         let r = deg.to_radians();

@@ -17,7 +17,7 @@ fn light_from(direction: Vec3) -> Incoming {
 }
 
 #[test]
-fn the_highlight_is_brightest_where_the_lights_mirror_image_is_seen() {
+pub(crate) fn the_highlight_is_brightest_where_the_lights_mirror_image_is_seen() {
     let scene = floor();
     // specular 0.5 × irradiance (2, 1, 0.5), with h = n: cos = 1.
     let peak = Color::new(1.0, 0.5, 0.25);
@@ -41,7 +41,7 @@ fn the_highlight_is_brightest_where_the_lights_mirror_image_is_seen() {
 }
 
 #[test]
-fn the_highlight_falls_off_with_the_halfway_angle_to_the_power_shininess() {
+pub(crate) fn the_highlight_falls_off_with_the_halfway_angle_to_the_power_shininess() {
     let scene = floor();
     // Eye straight above, light 60° from the normal: h is 30° from n.
     let ray = arriving(Vec3::NEG_Y);
@@ -56,7 +56,7 @@ fn the_highlight_falls_off_with_the_halfway_angle_to_the_power_shininess() {
 }
 
 #[test]
-fn a_matte_surface_has_no_highlight() {
+pub(crate) fn a_matte_surface_has_no_highlight() {
     let mut scene = floor();
     scene.materials[0].specular = 0.0;
     let ray = arriving(Vec3::NEG_Y);

@@ -6,7 +6,7 @@ use ch05_reflection::{SecondaryKind, mirror_ray, reflect};
 use super::{arriving, floor, surface};
 
 #[test]
-fn a_ray_at_45_degrees_leaves_at_45_degrees() {
+pub(crate) fn a_ray_at_45_degrees_leaves_at_45_degrees() {
     let s = 0.5f32.sqrt();
     let d = Vec3::new(s, -s, 0.0);
     let out = reflect(d, Vec3::Y);
@@ -22,7 +22,7 @@ fn a_ray_at_45_degrees_leaves_at_45_degrees() {
 }
 
 #[test]
-fn straight_on_comes_straight_back() {
+pub(crate) fn straight_on_comes_straight_back() {
     let out = reflect(Vec3::NEG_Z, Vec3::Z);
     assert!(
         (out - Vec3::Z).length() < 1e-7,
@@ -47,7 +47,7 @@ fn the_mirror_law_does_not_care_which_way_the_normal_points() {
 // The mirror ray.
 
 #[test]
-fn the_mirror_ray_leaves_at_the_mirror_angle_from_just_above_the_surface() {
+pub(crate) fn the_mirror_ray_leaves_at_the_mirror_angle_from_just_above_the_surface() {
     super::earlier::reflect_first();
     let scene = floor();
     let s = 0.5f32.sqrt();
@@ -82,7 +82,7 @@ fn the_mirror_ray_leaves_at_the_mirror_angle_from_just_above_the_surface() {
 }
 
 #[test]
-fn a_zero_weight_spawns_no_mirror_ray() {
+pub(crate) fn a_zero_weight_spawns_no_mirror_ray() {
     let scene = floor();
     let incoming = arriving(Vec3::new(0.3, -1.0, 0.2));
     let surface = surface(&scene, &incoming);

@@ -120,7 +120,7 @@ pub(crate) fn assert_the_recursion_is_sound() {
 }
 
 #[test]
-fn a_secondary_ray_is_one_bounce_deeper_and_carries_the_product_of_the_weights() {
+pub(crate) fn a_secondary_ray_is_one_bounce_deeper_and_carries_the_product_of_the_weights() {
     let scene = floor();
     let probe = Probe::new(
         [to_the_sky(MIRROR_WEIGHT, SecondaryKind::Reflection), None],
@@ -143,12 +143,12 @@ fn a_secondary_ray_is_one_bounce_deeper_and_carries_the_product_of_the_weights()
 }
 
 #[test]
-fn trace_offers_the_secondary_rays_one_bounce_deeper() {
+pub(crate) fn trace_offers_the_secondary_rays_one_bounce_deeper() {
     assert_the_recursion_is_sound();
 }
 
 #[test]
-fn each_secondary_ray_brings_back_its_weight_times_what_it_sees() {
+pub(crate) fn each_secondary_ray_brings_back_its_weight_times_what_it_sees() {
     let scene = floor();
     let background = scene.image.background;
     let rays = [
@@ -178,7 +178,7 @@ fn each_secondary_ray_brings_back_its_weight_times_what_it_sees() {
 }
 
 #[test]
-fn a_ray_the_tracer_stops_is_neither_traced_nor_counted() {
+pub(crate) fn a_ray_the_tracer_stops_is_neither_traced_nor_counted() {
     let scene = floor();
     let rays = [to_the_sky(MIRROR_WEIGHT, SecondaryKind::Reflection), None];
     let probe = Probe::new(rays, false);
@@ -209,7 +209,7 @@ fn a_ray_the_tracer_stops_is_neither_traced_nor_counted() {
 }
 
 #[test]
-fn trace_sees_the_background_where_the_ray_hits_nothing() {
+pub(crate) fn trace_sees_the_background_where_the_ray_hits_nothing() {
     let scene = floor();
     let probe = Probe::new([None, None], true);
     let up = Ray {
@@ -236,7 +236,7 @@ fn trace_sees_the_background_where_the_ray_hits_nothing() {
 }
 
 #[test]
-fn trace_adds_the_local_light_and_what_the_secondary_rays_bring_back() {
+pub(crate) fn trace_adds_the_local_light_and_what_the_secondary_rays_bring_back() {
     let scene = floor();
     let background = scene.image.background;
     let rays = [

@@ -6,7 +6,7 @@ use ch06_refraction::scene_files;
 use ch06_refraction::toolkit::scene::{Material, Object, Shape};
 use ch06_refraction::toolkit::{Color, Scene, Vec3};
 use ch06_refraction::workbench::compare::{Tolerance, compare};
-use ch06_refraction::workbench::snapshot::assert_image;
+use ch06_refraction::workbench::snapshot::{Precise, assert_image_beside};
 use ch06_refraction::{
     CHAPTER, Ray, Split, Surface, closest_hit, refract, render_glass, schlick, split,
 };
@@ -331,8 +331,9 @@ fn schlicks_cosine_is_taken_on_the_side_of_the_smaller_index() {
     let found = entering.reflected.x - REFLECTANCE.x;
     assert!(
         (found - expected).abs() < 1e-4,
-        "entering glass at 80°, Schlick's cos θ is cos θ₁ = cos 80° (the angle in air, the \
-         larger one): the mirror ray gets transparency × R = {expected:.4} more; found {found:.4}"
+        "entering glass at 80°, Schlick's cos θ is cos θ₁ = cos 80° (the cosine on the side of \
+         the smaller index: here the arriving ray's, in air): the mirror ray gets transparency × \
+         R = {expected:.4} more; found {found:.4}"
     );
     // Leaving at 41.7°, just below the critical angle: the angle outside is
     // θ₂ (86.2°), and R = 0.72, nearing 1, as total internal reflection takes over.
@@ -342,11 +343,36 @@ fn schlicks_cosine_is_taken_on_the_side_of_the_smaller_index() {
     let found = leaving.reflected.x - REFLECTANCE.x;
     assert!(
         (found - expected).abs() < 1e-3 && expected > 0.5,
-        "leaving glass at 41.7°, Schlick's cos θ is cos θ₂ = {:.4} (the angle in air, outside \
-         the denser medium, the larger one; cos θ₁ is taken only entering it): the mirror ray \
-         gets transparency × R = {expected:.4} more, rising to all of it at the critical angle; \
-         found {found:.4}",
+        "leaving glass at 41.7°, Schlick's cos θ is cos θ₂ = {:.4} (the cosine on the side of \
+         the smaller index, wherever the ray goes: here the refracted ray's, in air): the mirror \
+         ray gets transparency × R = {expected:.4} more, rising to all of it at the critical \
+         angle; found {found:.4}",
         direction.y
+    );
+}
+
+/// The rule in general: Schlick's cosine is the one on the side of the
+/// smaller index, whichever way the ray goes. Entering an air bubble in
+/// glass (ior 1/1.5) the smaller index is inside, so it is the refracted
+/// ray's cosine, though the ray enters: "the arriving ray's when entering"
+/// holds only for an ior above 1.
+#[test]
+fn schlicks_cosine_entering_a_bubble_is_the_refracted_rays() {
+    let mut scene = glass_floor(true);
+    scene.materials[0].ior = 1.0 / 1.5;
+    let into = split_at(&scene, &arriving_ray(40.0, true));
+    let direction = refracted_direction(&into, "into the bubble at 40°");
+    let expected = TRANSPARENCY * schlick_r(-direction.y);
+    let found = into.reflected.x - REFLECTANCE.x;
+    assert!(
+        (found - expected).abs() < 1e-3,
+        "entering an air bubble (ior 1/1.5) at 40°: from n₁ = 1 into n₂ = 0.667, the smaller \
+         index is on the far side, so Schlick's cos θ is the refracted ray's, cos θ₂ = {:.4} \
+         (θ₂ = {:.1}°), though the ray enters. \"The arriving ray's cosine when entering\" \
+         holds only for an ior above 1: take the cosine on the side of the smaller index. The \
+         mirror ray gets transparency × R = {expected:.4} more; found {found:.4}",
+        -direction.y,
+        angle_to(direction, Vec3::NEG_Y)
     );
 }
 
@@ -428,8 +454,38 @@ fn opaque_materials_spawn_no_refraction_ray() {
 fn snapshot_default() {
     earlier::refract_and_schlick_first();
     let scene = CHAPTER.default_scene().unwrap().with_size(160, 120);
-    assert_image("06-refraction", "default", &render_glass(&scene, || {}).0);
+    let picture = render_glass(&scene, || {}).0;
+    assert_image_beside("06-refraction", "default", &picture, PRECISE);
 }
+
+/// The tests whose messages say more than the pictures' counts of pixels:
+/// a picture that differs names those of them that fail beside it.
+const PRECISE: &[Precise] = &[
+    (
+        "entering_glass_the_ray_bends_towards_the_normal",
+        entering_glass_the_ray_bends_towards_the_normal,
+    ),
+    (
+        "leaving_glass_the_ray_bends_away_from_the_normal",
+        leaving_glass_the_ray_bends_away_from_the_normal,
+    ),
+    (
+        "the_weights_add_up_to_what_the_glass_transmits",
+        the_weights_add_up_to_what_the_glass_transmits,
+    ),
+    (
+        "schlicks_cosine_is_taken_on_the_side_of_the_smaller_index",
+        schlicks_cosine_is_taken_on_the_side_of_the_smaller_index,
+    ),
+    (
+        "schlicks_cosine_entering_a_bubble_is_the_refracted_rays",
+        schlicks_cosine_entering_a_bubble_is_the_refracted_rays,
+    ),
+    (
+        "an_air_bubble_in_glass_reflects_totally_beyond_41_81_degrees",
+        an_air_bubble_in_glass_reflects_totally_beyond_41_81_degrees,
+    ),
+];
 
 #[test]
 fn snapshot_bubble() {
@@ -437,7 +493,8 @@ fn snapshot_bubble() {
     let scene = scene_files::load(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/bubble.toml"))
         .unwrap()
         .with_size(160, 120);
-    assert_image("06-refraction", "bubble", &render_glass(&scene, || {}).0);
+    let picture = render_glass(&scene, || {}).0;
+    assert_image_beside("06-refraction", "bubble", &picture, PRECISE);
 }
 
 // Last: `workbook progress` ranks failures in this file's order, theirs after these.

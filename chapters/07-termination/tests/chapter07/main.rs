@@ -4,7 +4,7 @@
 use ch07_termination::scene_files;
 use ch07_termination::toolkit::{Color, Scene, Vec3};
 use ch07_termination::workbench::exercise::builds_on;
-use ch07_termination::workbench::snapshot::assert_image;
+use ch07_termination::workbench::snapshot::{Precise, assert_image_beside};
 use ch07_termination::{
     CHAPTER, Glass, Mirrors, Termination, below_threshold, render_terminated, render_whitted,
 };
@@ -272,8 +272,33 @@ fn snapshot_default() {
     below_threshold_first();
     let scene = CHAPTER.default_scene().unwrap().with_size(160, 120);
     let (image, _) = render_terminated(&scene, Termination::of(&scene), || {});
-    assert_image("07-termination", "default", &image);
+    assert_image_beside("07-termination", "default", &image, PRECISE);
 }
+
+/// The tests whose messages say more than the picture's count of pixels:
+/// the snapshot, when it differs, names those of them that fail beside it.
+const PRECISE: &[Precise] = &[
+    (
+        "a_weight_is_below_the_threshold_only_if_every_channel_is",
+        a_weight_is_below_the_threshold_only_if_every_channel_is,
+    ),
+    (
+        "a_weight_equal_to_the_threshold_is_traced",
+        a_weight_equal_to_the_threshold_is_traced,
+    ),
+    (
+        "a_path_ends_by_weight_only_when_every_channel_is_below_the_threshold",
+        a_path_ends_by_weight_only_when_every_channel_is_below_the_threshold,
+    ),
+    (
+        "in_two_perfect_mirrors_only_depth_ends_paths",
+        in_two_perfect_mirrors_only_depth_ends_paths,
+    ),
+    (
+        "half_mirrors_and_threshold_one_tenth_trace_three_reflections",
+        half_mirrors_and_threshold_one_tenth_trace_three_reflections,
+    ),
+];
 
 // Last: `workbook progress` ranks failures in this file's order, theirs after these.
 /// `--pixel X,Y --json`: which criterion ended each path.

@@ -65,12 +65,17 @@ enum Lead<'a> {
 ///
 /// A test that ran into the `todo!` of the exercise `next` (the one the
 /// advice names) leads before the others, so that the row and the advice
-/// speak of the same exercise.
+/// speak of the same exercise. Of the others, a test of one function leads
+/// before one of a whole picture (a chapter's `pictures` module: "max_depth
+/// = 2 follows exactly 2 bounces" says less than the test of the weight
+/// that broke it).
 fn lead<'a>(output: &'a TestOutput, next: Option<&str>) -> Lead<'a> {
-    let told = |(test, _): &&(String, String)| !test.starts_with("snapshot");
+    let told = |(test, _): &&(String, String)| !is_snapshot(test);
+    let precise = |(test, _): &&(String, String)| !is_snapshot(test) && !of_pictures(test);
     let of_next =
         |(_, message): &&(String, String)| next.is_some_and(|id| lesson::names(message, id));
     let told = (output.panics.iter().filter(told).find(of_next))
+        .or_else(|| output.panics.iter().find(precise))
         .or_else(|| output.panics.iter().find(told));
     match (&output.compile_error, told, output.snapshots.first()) {
         (Some(error), _, _) => Lead::Compile(error),
@@ -85,6 +90,20 @@ fn lead<'a>(output: &'a TestOutput, next: Option<&str>) -> Lead<'a> {
             None => Lead::Passed,
         },
     }
+}
+
+/// Is `test` (`snapshot_bubble`, or with its module, `pictures::snapshot_flat`)
+/// a snapshot test, whose message is a count of pixels?
+fn is_snapshot(test: &str) -> bool {
+    test.rsplit("::")
+        .next()
+        .unwrap_or(test)
+        .starts_with("snapshot")
+}
+
+/// Is `test` one of a chapter's whole-picture tests (its `pictures` module)?
+fn of_pictures(test: &str) -> bool {
+    test.starts_with("pictures::")
 }
 
 /// The first thing that went wrong in a chapter's run, in a few words;
@@ -207,20 +226,31 @@ pub fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) ->
     // The exercise not written yet that the text asks for first (of those
     // whose todo! a test met, if any did).
     match next {
-        Some((file, line, region)) => format!(
-            "next: chapter {}: exercise {} in {}:{line}: {}\n      \
-             read {readme}, write it, then run `{command}`",
-            chapter.number(),
-            region.id,
-            file.display(),
-            region.hint
-        ),
+        Some((file, line, region)) => {
+            // A test that fails other than at a todo! fails in code
+            // already written: its answer is there too.
+            let written_fails = (output.panics.iter())
+                .any(|(_, message)| !message.starts_with("not yet implemented: "));
+            let answers = match written_fails {
+                true => answers_line(&row.exercises),
+                false => String::new(),
+            };
+            format!(
+                "next: chapter {}: exercise {} in {}:{line}: {}\n      \
+                 read {readme}, write it, then run `{command}`{answers}",
+                chapter.number(),
+                region.id,
+                file.display(),
+                region.hint
+            )
+        }
         None => {
+            let answers = answers_line(&row.exercises);
             let what = match lead(output, None) {
                 Lead::Told { test, message } => {
                     return format!(
                         "next: chapter {}: the test {test} fails:\n      {message}\n      \
-                         run `{command}` and compare with {readme}",
+                         run `{command}` and compare with {readme}{answers}",
                         chapter.number()
                     );
                 }
@@ -229,10 +259,31 @@ pub fn next_step(results: &[ChapterResult], here: Option<usize>, root: &Path) ->
                 _ => "no test ran".to_owned(),
             };
             format!(
-                "next: chapter {}: {what}; run `{command}` and compare with {readme}",
+                "next: chapter {}: {what}; run `{command}` and compare with {readme}{answers}",
                 chapter.number()
             )
         }
+    }
+}
+
+/// The line that says the answers of a chapter's written exercises are
+/// there, now that they were tried (`workbook hint ID --level 4`); empty
+/// if none is written.
+fn answers_line(exercises: &[(PathBuf, usize, Region)]) -> String {
+    let written: Vec<&str> = (exercises.iter())
+        .filter(|(_, _, r)| !r.is_open())
+        .map(|(_, _, r)| r.id.as_str())
+        .collect();
+    match written.as_slice() {
+        [] => String::new(),
+        [id] => {
+            format!("\n      you have tried it: `workbook hint {id} --level 4` shows the answer")
+        }
+        ids => format!(
+            "\n      you have tried them: `workbook hint ID --level 4` shows the answer \
+             (ID: {})",
+            ids.join(", ")
+        ),
     }
 }
 
@@ -294,6 +345,77 @@ mod tests {
     }
 
     #[test]
+    fn a_precise_message_leads_before_a_snapshot_and_a_whole_picture() {
+        // libtest names a test by its module: `pictures::…` sorts before
+        // `triangles::…`, but a count of pixels, or a whole picture's
+        // test, explains less than the test of one function.
+        let written = "    // EXERCISE(ch02-triangle): x\n    None\n    // END EXERCISE\n";
+        let mut chapter = row("02-hits", None, written);
+        chapter.output = Some(TestOutput {
+            failed: 3,
+            failed_tests: vec![
+                "pictures::snapshot_flat".into(),
+                "pictures::the_flat_view_shows_each_object".into(),
+                "triangles::barycentric_weights".into(),
+            ],
+            snapshots: vec![("02-hits/flat".into(), None)],
+            panics: vec![
+                (
+                    "pictures::snapshot_flat".into(),
+                    "snapshot 02-hits/flat differs: 812 pixels".into(),
+                ),
+                (
+                    "pictures::the_flat_view_shows_each_object".into(),
+                    "the triangle's pixels differ".into(),
+                ),
+                (
+                    "triangles::barycentric_weights".into(),
+                    "β is not divided by |N|".into(),
+                ),
+            ],
+            ..TestOutput::default()
+        });
+        let text = report(&[chapter], Path::new("/w"));
+        let row = text.lines().nth(1).unwrap();
+        assert!(
+            row.ends_with("  test triangles::barycentric_weights"),
+            "{text}"
+        );
+        assert!(text.contains("β is not divided by |N|"), "{text}");
+        assert!(!text.contains("812 pixels"), "{text}");
+    }
+
+    #[test]
+    fn a_written_exercise_that_fails_beside_an_open_one_has_its_answer_offered() {
+        let exercises = "    // EXERCISE(ch01-at): a\n    self.origin\n    // END EXERCISE\n}\nfn g() {\n\
+                         // EXERCISE(ch01-frame): f\n    todo!()\n    // END EXERCISE\n";
+        let mut chapter = row("01-rays", None, exercises);
+        chapter.output = Some(TestOutput {
+            failed: 2,
+            failed_tests: vec!["a_ray_walks".into(), "the_frame".into()],
+            panics: vec![
+                ("a_ray_walks".into(), "r(2.5) is not 2.5 along".into()),
+                (
+                    "the_frame".into(),
+                    "not yet implemented: ch01-frame: f".into(),
+                ),
+            ],
+            ..TestOutput::default()
+        });
+        let text = report(&[chapter.clone()], Path::new("/w"));
+        assert!(text.contains("exercise ch01-frame"), "{text}");
+        assert!(
+            text.contains("`workbook hint ch01-at --level 4` shows the answer"),
+            "{text}"
+        );
+        // Only todo!s fail: nothing written fails, no answer is offered.
+        let output = chapter.output.as_mut().unwrap();
+        output.panics.remove(0);
+        let text = report(&[chapter], Path::new("/w"));
+        assert!(!text.contains("--level 4"), "{text}");
+    }
+
+    #[test]
     fn a_result_of_the_last_run_says_so() {
         let ok = "test result: ok. 5 passed; 0 failed; 0 ignored\n";
         let mut rows = [
@@ -340,6 +462,13 @@ mod tests {
                 "next: chapter 2: the test the_lectures_worked_example fails:\n      \
                  assertion `left == right` failed: the roots are 1 and 3; left: None; \
                  right: Some((1.0, 3.0))\n      run `cargo test -p ch02-hits`"
+            ),
+            "{text}"
+        );
+        // The answer is there, now that the exercise was tried.
+        assert!(
+            text.contains(
+                "you have tried it: `workbook hint ch02-sphere --level 4` shows the answer"
             ),
             "{text}"
         );

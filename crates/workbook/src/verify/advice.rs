@@ -9,6 +9,9 @@ impl Mistake {
     /// What is wrong with the picture, for a reference of `size`.
     pub fn what(&self, (width, height): (u32, u32)) -> String {
         match self {
+            Mistake::TurnedHalfway => {
+                "your picture is turned by 180° (upside down and mirrored left to right)".into()
+            }
             Mistake::FlippedTopToBottom => "your picture is upside down (flipped top to bottom)".into(),
             Mistake::MirroredLeftToRight => "your picture is mirrored left to right".into(),
             Mistake::GammaEncoded => {
@@ -40,11 +43,17 @@ impl Mistake {
     /// How to fix it.
     pub fn fix(&self, (width, height): (u32, u32)) -> String {
         match self {
+            Mistake::TurnedHalfway => "the camera's right is forward × up₀, not up₀ × forward: the swapped \
+                 order makes right point left, and up = right × forward then points down, so the picture \
+                 turns by 180°. (A picture that looks the same mirrored shows the turn as upside down \
+                 only: check the flip of y too, v = (1 − 2(y + 0.5)/height)·half_height.)"
+                .into(),
             Mistake::FlippedTopToBottom => "row 0 is the top of the picture: the ray of pixel row y goes up by \
                  v = (1 − 2(y + 0.5)/height)·half_height, positive in the top half, and rows are written top first"
                 .into(),
-            Mistake::MirroredLeftToRight => "the camera's right is forward × up (not up × forward), and pixel column x \
-                 looks right by u = (2(x + 0.5)/width − 1)·half_width"
+            Mistake::MirroredLeftToRight => "pixel column x looks right by u = (2(x + 0.5)/width − 1)·half_width, \
+                 along the camera's right = forward × up₀ (with up = right × forward, the swapped order \
+                 turns the picture by 180° instead)"
                 .into(),
             Mistake::GammaEncoded => "store each channel clamped to [0, 1] as round(255·v), with no gamma or sRGB curve \
                  (turn off any conversion your image library makes)"
@@ -120,8 +129,8 @@ impl fmt::Display for Diagnosis {
             ),
             Diagnosis::Differs(region) => write!(
                 f,
-                "none of the usual mistakes fits (flipped, mirrored, gamma, BGR, half-pixel shift, \
-                 field of view, wrapped colours, swapped size).\n{region}"
+                "none of the usual mistakes fits (turned 180°, flipped, mirrored, gamma, BGR, \
+                 half-pixel shift, field of view, wrapped colours, swapped size).\n{region}"
             ),
         }
     }

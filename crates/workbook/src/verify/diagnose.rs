@@ -29,6 +29,10 @@ const LARGE_FACTOR: usize = 8;
 /// The usual mistakes of a tracer's first pictures.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Mistake {
+    /// Turned by 180°: upside down and mirrored, the camera's right and up
+    /// both reversed (right = up × forward, the cross product's order
+    /// swapped, and up worked out from it).
+    TurnedHalfway,
     /// Upside down: the top row drawn at the bottom.
     FlippedTopToBottom,
     /// Left and right exchanged.
@@ -144,6 +148,13 @@ fn candidates(expected: &RgbImage, actual: &RgbImage, tolerance: Tolerance) -> V
         Candidate {
             mistake: Mistake::ColoursWrapped,
             remaining: differing_below_saturation(expected, actual, tolerance),
+        },
+        // Before the flip: in a picture that is the same mirrored, a turn
+        // by 180° looks like a flip, and the turn is the commoner mistake
+        // (the order of a cross product).
+        Candidate {
+            mistake: Mistake::TurnedHalfway,
+            remaining: undone(&imageops::rotate180(actual)),
         },
         Candidate {
             mistake: Mistake::FlippedTopToBottom,

@@ -1,5 +1,6 @@
-//! Mistakes of the camera that verify names: rays through the pixels'
-//! corners, the fov taken as horizontal, width and height swapped.
+//! Mistakes of the camera that verify names: right from the cross product
+//! in the wrong order, rays through the pixels' corners, the fov taken as
+//! horizontal, width and height swapped.
 
 use ch03_lambert::Camera;
 use workbook::toolkit::{Image, Scene};
@@ -45,6 +46,24 @@ fn rays_through_pixel_corners_are_named() {
         "corners.png",
         Mistake::HalfPixelShift(workbook::verify::Corner::TopLeft),
         "half a pixel",
+    );
+}
+
+#[test]
+fn right_from_the_swapped_cross_product_is_named_a_turn_by_180_degrees() {
+    // right = up₀ × forward, the order swapped, and up = right × forward
+    // worked out from it: both point the wrong way.
+    let scene = chapter3_scene();
+    let mut camera = Camera::new(&scene.camera, 160, 120);
+    camera.right = scene.camera.up.cross(camera.forward).normalize();
+    camera.up = camera.right.cross(camera.forward);
+    let turned = render_chapter3(&scene, &camera, |x, y| (x as f32 + 0.5, y as f32 + 0.5));
+    assert_named(
+        "3",
+        &turned.to_rgb8(),
+        "turned.png",
+        Mistake::TurnedHalfway,
+        "forward × up₀, not up₀ × forward",
     );
 }
 

@@ -17,6 +17,23 @@ fn a_picture_upside_down_is_named() {
     );
 }
 
+/// Chapters 1 and 2 first show the camera's commonest mistake, right =
+/// up₀ × forward, which turns the picture by 180° (right and up both
+/// reversed: exactly the reference turned round).
+#[test]
+fn a_picture_turned_by_180_degrees_is_named_in_chapters_1_and_2() {
+    for chapter in ["1", "2"] {
+        let turned = image::imageops::rotate180(&reference_image(chapter));
+        assert_named(
+            chapter,
+            &turned,
+            &format!("turned-{chapter}.png"),
+            Mistake::TurnedHalfway,
+            "turned by 180°",
+        );
+    }
+}
+
 #[test]
 fn a_mirrored_picture_is_named() {
     let mirrored = image::imageops::flip_horizontal(&reference_image("3"));
