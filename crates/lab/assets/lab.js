@@ -42,18 +42,27 @@ function showChapters(rows) {
     if (row.passes) tr.classList.add("passes");
     if (row.folder === lab.chapter) tr.classList.add("selected");
     body.append(tr);
-    if (row.failure || row.next) {
-      const cell = el("td", { colspan: 4, class: "failure" });
-      if (row.failure) cell.append(row.failure);
-      if (row.next) {
-        cell.append(el("br"), `next: ${row.next.id} (${row.next.file}:${row.next.line}) `);
-        for (const level of [1, 2, 3]) {
-          cell.append(el("button", { onclick: (e) => { e.stopPropagation(); hint(row.next.id, level); } }, `hint ${level}`));
-        }
-      }
-      body.append(el("tr", { onclick: () => choose(row.folder, true) }, cell));
+    if (row.run && !row.passes && row.failure) {
+      body.append(el("tr", { onclick: () => choose(row.folder, true) }, el("td", { colspan: 4, class: "failure" }, row.failure)));
     }
   }
+  showExercises(rows.find((r) => r.folder === lab.chapter));
+}
+
+// The selected chapter's exercises, each with its three hints.
+function showExercises(row) {
+  const box = document.getElementById("exercises");
+  box.replaceChildren();
+  if (!row || !row.exercise_list) return;
+  box.append(el("h3", {}, `Exercises of ${row.folder}`));
+  if (row.next) box.append(el("p", { class: "next" }, `next: ${row.next.id} in ${row.next.file}:${row.next.line}: ${row.next.hint}`));
+  const list = el("ul", {});
+  for (const exercise of row.exercise_list) {
+    const item = el("li", {}, el("span", { class: exercise.open ? "open" : "written" }, exercise.open ? "○ " : "✓ "), exercise.id, " ");
+    for (const level of [1, 2, 3]) item.append(el("button", { onclick: () => hint(exercise.id, level), title: ["", "a nudge: what to compute", "the text that derives it", "the tests that check it (runs them)"][level] }, `hint ${level}`));
+    list.append(item);
+  }
+  box.append(list);
 }
 
 async function hint(id, level) {
@@ -73,6 +82,7 @@ async function choose(folder, byHand) {
   if (lab.chapter !== folder) { lab.pixel = null; document.getElementById("pixel").hidden = true; }
   lab.chapter = folder;
   lab.benchKey = null;
+  if (lab.state && lab.state.rows) showChapters(lab.state.rows);
   location.hash = folder;
   const answer = await getJson(`api/bench?chapter=${encodeURIComponent(folder)}`);
   if (answer.error) message([answer.error], "error");
