@@ -4,7 +4,7 @@
 "use strict";
 
 const WIDTH = 160, HEIGHT = 120;
-const lab = { version: -1, chapter: null, chosen: false, pixel: null, state: null, benchKey: null, lastShown: null };
+const lab = { version: -1, chapter: null, chosen: false, pixel: null, state: null, benchKey: null, lastShown: undefined };
 
 function el(tag, attrs, ...children) {
   const node = document.createElement(tag);
@@ -94,7 +94,7 @@ function message(lines, kind) {
   box.replaceChildren();
   if (!lines.length) return;
   if (kind === "error") box.append(el("pre", { class: "error" }, lines.join("\n")));
-  else box.append(el("div", { class: kind === "good" ? "message good" : "message" }, lines.join("\n")));
+  else box.append(el("div", { class: `message ${kind}` }, lines.join("\n")));
 }
 
 function showBench(state) {
@@ -114,19 +114,20 @@ function showBench(state) {
   if (lab.benchKey === key) return;
   lab.benchKey = key;
   const row = (state.rows || []).find((r) => r.folder === folder);
-  const first = row && row.next ? `write ${row.next.id} first (${row.next.file}:${row.next.line}): ${row.next.hint}` : null;
+  const first = row && row.next ? `${row.next.id} first (${row.next.file}:${row.next.line}): ${row.next.hint}` : null;
   yours.removeAttribute("src"); difference.removeAttribute("src");
   diagnosis.hidden = true;
   if (bench.build_errors.length) {
     message(["chapter " + folder + " does not compile:", ...bench.build_errors], "error");
   } else if (bench.todo) {
-    message([`your code reached the todo! of exercise ${bench.todo[0]}: ${bench.todo[1]}.`,
-      "Write it first; the reference's picture is shown meanwhile.", first].filter(Boolean), "info");
+    message([`Your picture cannot be drawn yet: rendering reached the todo! of exercise ${bench.todo[0]} (${bench.todo[1]}).`,
+      first ? `The chapter's text asks for ${first}` : null,
+      "The reference's picture is shown meanwhile."].filter(Boolean), "info");
   } else if (bench.failure) {
     message([bench.failure], "error");
   } else {
     const timing = bench.since_save != null ? ` (picture ${bench.since_save.toFixed(2)} s after your save)` : "";
-    message([bench.verdict + timing], bench.passed ? "good" : "info");
+    message([bench.verdict + timing], bench.passed ? "good" : "bad");
     yours.src = `pictures/${folder}/yours.png?v=${version}`;
     if (!bench.passed) difference.src = `pictures/${folder}/difference.png?v=${version}`;
     if (bench.diagnosis) { diagnosis.hidden = false; diagnosis.textContent = bench.diagnosis; }
@@ -180,7 +181,9 @@ function showTrees(answer) {
   else if (answer.comparison) { first.textContent = `your tree matches the reference's (${comparison.values} values compared)`; first.className = "same"; }
   else first.textContent = "no comparison: one of the trees is missing";
   document.getElementById("shortened").textContent = answer.shortened;
-  drawTree("tree-yours", answer.yours, difference);
+  lab.trees = answer;
+  const all = document.getElementById("all-fields").checked;
+  drawTree("tree-yours", all || !answer.yours_short ? answer.yours : { tree: answer.yours_short }, difference);
   drawTree("tree-reference", answer.reference, difference);
   if (answer.svg) { svg.src = "data:image/svg+xml;charset=utf-8," + encodeURIComponent(answer.svg); document.getElementById("svg-box").hidden = false; }
   else document.getElementById("svg-box").hidden = true;
@@ -266,6 +269,7 @@ document.addEventListener("keydown", (event) => {
   pick(lab.pixel[0] + move[0], lab.pixel[1] + move[1]);
 });
 window.addEventListener("resize", placeMarks);
+document.getElementById("all-fields").addEventListener("change", () => { if (lab.trees) showTrees(lab.trees); });
 
 // ---- polling ----
 
@@ -285,6 +289,7 @@ async function refresh(force) {
     if (here && here.folder !== lab.chapter) { lab.chosen = true; choose(here.folder, false); return; }
   }
   // A save in another chapter: the server renders that one; follow it.
+  if (lab.lastShown === undefined) lab.lastShown = state.shown;
   if (state.shown && state.shown !== lab.lastShown) {
     lab.lastShown = state.shown;
     if (state.shown !== lab.chapter) { choose(state.shown, false); return; }
@@ -296,7 +301,7 @@ async function start() {
   const chapters = await getJson("api/chapters");
   if (Array.isArray(chapters)) showChapters(chapters.map((c) => ({ folder: c.folder })));
   const wanted = decodeURIComponent(location.hash.slice(1));
-  if (wanted && Array.isArray(chapters) && chapters.some((c) => c.folder === wanted)) choose(wanted, true);
+  if (wanted && Array.isArray(chapters) && chapters.some((c) => c.folder === wanted)) await choose(wanted, true);
   await refresh(true);
   setInterval(refresh, 700);
 }

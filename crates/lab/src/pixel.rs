@@ -87,9 +87,12 @@ pub fn trees(root: &Path, chapter: &ChapterEntry, (x, y): (u32, u32)) -> Value {
         },
         _ => Value::Null,
     };
+    // The student's tree cut as the reference's is, so that the two line up.
+    let yours_short = yours.as_ref().ok().map(facts::shorten);
     json!({
         "chapter": chapter.folder,
         "pixel": [x, y],
+        "yours_short": yours_short,
         "yours": result(yours),
         "svg": std::fs::read_to_string(&svg).ok(),
         "reference": result(reference),

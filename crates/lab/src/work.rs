@@ -30,6 +30,9 @@ struct Inner {
     pictures: BTreeMap<String, Pictures>,
     /// The chapter the page shows, rendered again on a save.
     shown: Option<String>,
+    /// A picture asked for by a save and not rendered yet: progress waits
+    /// for it, so that its build does not hold cargo's lock first.
+    picture_pending: bool,
 }
 
 /// The lab's state and the queues of its workers.
@@ -147,41 +150,58 @@ impl State {
         let edited = saved.as_deref().and_then(|p| chapter_of(&self.root, p));
         let folder = edited.or_else(|| self.lock().shown.clone());
         if let Some(folder) = folder {
-            self.lock().shown = Some(folder.clone());
+            let mut inner = self.lock();
+            inner.shown = Some(folder.clone());
+            inner.picture_pending = true;
             let _ = self.benches.send((folder, Some(at)));
         }
         self.want_progress(saved);
     }
 
     fn bench_worker(&self, jobs: Receiver<(String, Option<Instant>)>) {
-        while let Ok(mut job) = jobs.recv() {
-            // Of several asked meanwhile, the last.
-            while let Ok(later) = jobs.try_recv() {
-                job = later;
+        while let Ok(job) = jobs.recv() {
+            // Those asked meanwhile, each chapter once (the earliest save).
+            let mut queue = vec![job];
+            while let Ok((folder, saved_at)) = jobs.try_recv() {
+                match queue.iter_mut().find(|(f, _)| *f == folder) {
+                    Some(queued) => queued.1 = queued.1.or(saved_at),
+                    None => queue.push((folder, saved_at)),
+                }
             }
-            let (folder, saved_at) = job;
-            let Ok(entry) = chapter::bench_chapter(&folder) else {
-                continue;
-            };
-            self.change(|i| {
-                i.busy
-                    .insert("bench", format!("building and rendering chapter {folder}…"));
-            });
-            let (mut bench, pictures) =
-                bench::run(&self.root, entry, &self.root.join("target/lab"));
-            bench.since_save = saved_at.map(|t| t.elapsed().as_secs_f64());
-            self.change(|i| {
-                i.busy.remove("bench");
-                i.benches.insert(folder.clone(), bench);
-                i.pictures.insert(folder, pictures);
-            });
+            for (folder, saved_at) in queue {
+                self.bench(folder, saved_at);
+            }
         }
+    }
+
+    /// Builds and renders a chapter's bench.
+    fn bench(&self, folder: String, saved_at: Option<Instant>) {
+        let Ok(entry) = chapter::bench_chapter(&folder) else {
+            return;
+        };
+        self.change(|i| {
+            i.busy
+                .insert("bench", format!("building and rendering chapter {folder}…"));
+        });
+        let (mut bench, pictures) = bench::run(&self.root, entry, &self.root.join("target/lab"));
+        bench.since_save = saved_at.map(|t| t.elapsed().as_secs_f64());
+        self.change(|i| {
+            i.busy.remove("bench");
+            i.benches.insert(folder.clone(), bench);
+            i.pictures.insert(folder, pictures);
+            i.picture_pending = false;
+        });
     }
 
     fn test_worker(&self, jobs: Receiver<Option<PathBuf>>) {
         while let Ok(mut saved) = jobs.recv() {
             while let Ok(later) = jobs.try_recv() {
                 saved = later.or(saved);
+            }
+            // The saved chapter's picture first (at most a minute).
+            let waiting = Instant::now();
+            while self.lock().picture_pending && waiting.elapsed().as_secs() < 60 {
+                std::thread::sleep(std::time::Duration::from_millis(50));
             }
             self.change(|i| {
                 i.busy
