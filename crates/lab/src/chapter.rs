@@ -1,8 +1,11 @@
 //! The chapters the lab shows, and running a chapter's own binary (the
 //! debug build that its tests and `progress` made, or that the lab builds).
 
+use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
+use std::thread::JoinHandle;
+use std::time::{Duration, Instant};
 
 use workbook::verify::tree::facts::SIZE;
 use workbook::workbench::chapters::{self, ChapterEntry};
@@ -41,8 +44,14 @@ pub fn binary(root: &Path, chapter: &ChapterEntry) -> PathBuf {
     target.join("debug").join(name)
 }
 
+/// How long a chapter's binary may take before the lab stops it: a render
+/// at 160×120 takes well under a second in a debug build, unless the
+/// student's code loops forever.
+pub const PATIENCE: Duration = Duration::from_secs(60);
+
 /// Runs the chapter's binary on its default scene at the snapshot size
-/// (with the arguments of its reference picture) and `extra` arguments.
+/// (with the arguments of its reference picture) and `extra` arguments;
+/// stopped after [`PATIENCE`].
 pub fn run(root: &Path, chapter: &ChapterEntry, extra: &[&str]) -> Result<Output, String> {
     let binary = binary(root, chapter);
     if !binary.exists() {
@@ -57,12 +66,49 @@ pub fn run(root: &Path, chapter: &ChapterEntry, extra: &[&str]) -> Result<Output
     let reference = chapter.verify.as_ref().map(|v| v.args.as_slice());
     args.extend(reference.unwrap_or_default().iter().map(String::as_str));
     args.extend(extra);
-    Command::new(&binary)
+    let mut child = Command::new(&binary)
         .args(&args)
         .current_dir(root)
         .stdin(Stdio::null())
-        .output()
-        .map_err(|e| format!("cannot run {}: {e}", binary.display()))
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot run {}: {e}", binary.display()))?;
+    let (stdout, stderr) = (read_all(child.stdout.take()), read_all(child.stderr.take()));
+    let started = Instant::now();
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break status,
+            Ok(None) if started.elapsed() > PATIENCE => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return Err(format!(
+                    "chapter {}'s binary ran for more than {} s and was stopped: does a loop of yours never end?",
+                    chapter.folder,
+                    PATIENCE.as_secs()
+                ));
+            }
+            Ok(None) => std::thread::sleep(Duration::from_millis(2)),
+            Err(e) => return Err(format!("cannot wait for {}: {e}", binary.display())),
+        }
+    };
+    Ok(Output {
+        status,
+        stdout: stdout.join().unwrap_or_default(),
+        stderr: stderr.join().unwrap_or_default(),
+    })
+}
+
+/// Reads all of a pipe in a thread of its own (so that neither pipe of a
+/// child fills up while the other is read).
+fn read_all(pipe: Option<impl Read + Send + 'static>) -> JoinHandle<Vec<u8>> {
+    std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        if let Some(mut pipe) = pipe {
+            let _ = pipe.read_to_end(&mut bytes);
+        }
+        bytes
+    })
 }
 
 /// The exercise whose `todo!` a run reached: its id and hint, from the

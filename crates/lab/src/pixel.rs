@@ -59,7 +59,7 @@ pub fn trees(root: &Path, chapter: &ChapterEntry, (x, y): (u32, u32)) -> Value {
     let reference = facts_of(&chapter.folder).and_then(|f| f.tree(x, y));
     let work = root.join("target/lab").join(&chapter.folder);
     let _ = std::fs::create_dir_all(&work);
-    let svg = work.join("pixel.svg");
+    let svg = work.join(format!("pixel-{x}-{y}.svg"));
     let _ = std::fs::remove_file(&svg);
     let pixel = format!("{x},{y}");
     let started = std::time::Instant::now();
@@ -87,6 +87,8 @@ pub fn trees(root: &Path, chapter: &ChapterEntry, (x, y): (u32, u32)) -> Value {
         },
         _ => Value::Null,
     };
+    let drawing = std::fs::read_to_string(&svg).ok();
+    let _ = std::fs::remove_file(&svg);
     // The student's tree cut as the reference's is, so that the two line up.
     let yours_short = yours.as_ref().ok().map(facts::shorten);
     json!({
@@ -94,7 +96,7 @@ pub fn trees(root: &Path, chapter: &ChapterEntry, (x, y): (u32, u32)) -> Value {
         "pixel": [x, y],
         "yours_short": yours_short,
         "yours": result(yours),
-        "svg": std::fs::read_to_string(&svg).ok(),
+        "svg": drawing,
         "reference": result(reference),
         "shortened": facts::SHORTENED,
         "comparison": comparison,
