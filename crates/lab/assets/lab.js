@@ -181,6 +181,8 @@ function showTrees(answer) {
   else if (answer.comparison) { first.textContent = `your tree matches the reference's (${comparison.values} values compared)`; first.className = "same"; }
   else first.textContent = "no comparison: one of the trees is missing";
   document.getElementById("shortened").textContent = answer.shortened;
+  // Which pixel's trees these are (the label changes at the click already).
+  document.getElementById("pixel").dataset.shown = answer.pixel.join(",");
   lab.trees = answer;
   const all = document.getElementById("all-fields").checked;
   drawTree("tree-yours", all || !answer.yours_short ? answer.yours : { tree: answer.yours_short }, difference);

@@ -61,7 +61,7 @@ fn a_student_clicks_a_wrong_pixel_and_sees_the_page_follow_the_fix() {
     let label = format!("({x}, {y})");
     browser.wait_for(
         &format!(
-            "document.getElementById('pixel-label').textContent.startsWith('{label}') \
+            "document.getElementById('pixel').dataset.shown === '{x},{y}' \
              && document.querySelector('#tree-yours details') !== null \
              && document.querySelector('#tree-reference details') !== null \
              && document.getElementById('first-difference').textContent.startsWith('first difference')"
