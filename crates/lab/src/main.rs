@@ -41,9 +41,15 @@ fn main() -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// Opens `url` with xdg-open (or macOS's open), if there is one.
+/// Opens `url` with xdg-open (macOS: open), if there is one. (Not `open`
+/// elsewhere: on Debian that is openvt.)
 fn open(url: &str) -> bool {
-    ["xdg-open", "open"].iter().any(|program| {
+    let programs: &[&str] = if cfg!(target_os = "macos") {
+        &["open"]
+    } else {
+        &["xdg-open"]
+    };
+    programs.iter().any(|program| {
         Command::new(program)
             .arg(url)
             .stdin(Stdio::null())
