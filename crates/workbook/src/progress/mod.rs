@@ -30,7 +30,7 @@ mod parse;
 mod report;
 mod run;
 mod table;
-mod watch;
+pub mod watch;
 
 use std::collections::{BTreeMap, VecDeque};
 use std::ffi::OsStr;
@@ -39,7 +39,7 @@ use std::process::ExitCode;
 use std::sync::mpsc;
 
 pub use parse::{TestOutput, parse};
-pub use report::{ChapterResult, report};
+pub use report::{ChapterResult, here, next_step, report};
 
 use crate::workbench::chapters::{self, ChapterEntry};
 use crate::workspace::{current_workspace, workspace_regions};
@@ -104,6 +104,30 @@ fn progress_in(
     args: &ProgressArgs,
     saved: Option<&Path>,
 ) -> Result<bool, String> {
+    Ok(tested(root, cargo, args, saved, true)?.finish())
+}
+
+/// What `progress` finds, as a library call that prints nothing (the lab
+/// shows it): each chapter's row, in order, the rows not run included.
+/// `saved` is the file whose save started this run, if any: its chapter is
+/// tested first.
+pub fn results(
+    root: &Path,
+    args: &ProgressArgs,
+    saved: Option<&Path>,
+) -> Result<Vec<ChapterResult>, String> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    Ok(tested(root, &cargo, args, saved, false)?.results())
+}
+
+/// Tests the chapters, filling a table (printed as it fills if `printed`).
+fn tested(
+    root: &Path,
+    cargo: &OsStr,
+    args: &ProgressArgs,
+    saved: Option<&Path>,
+    printed: bool,
+) -> Result<Table, String> {
     let steps: Vec<&'static ChapterEntry> =
         chapters::all().iter().filter(|c| is_a_step(c)).collect();
     if !root.join("target/workbook/results").exists() {
@@ -120,7 +144,7 @@ fn progress_in(
         root,
         steps: &steps,
     };
-    let mut table = Table::new(&steps, root);
+    let mut table = Table::new(&steps, root, printed);
     // The chapters before the first that changed: their last results.
     let inputs = cache::Inputs::scan(root);
     let mut to_test = Vec::new();
@@ -135,7 +159,7 @@ fn progress_in(
     }
     let edited = edited.and_then(|e| steps.iter().position(|c| c.folder == e.folder));
     run.test(&mut table, &run_order(&to_test, edited), edited)?;
-    Ok(table.finish())
+    Ok(table)
 }
 
 /// What progress says as it starts in a workspace where it never ran: the

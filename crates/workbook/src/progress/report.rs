@@ -25,14 +25,23 @@ impl ChapterResult {
 
     /// The exercise to write next (see [`lesson::next_exercise`]): the
     /// advice names it, and the row's first failure is a test of it.
-    fn next_exercise(&self, root: &Path) -> Option<&(PathBuf, usize, Region)> {
+    pub fn next_exercise(&self, root: &Path) -> Option<&(PathBuf, usize, Region)> {
         let open: Vec<_> = self.open_exercises().collect();
         let order = lesson::lesson_order(root, self.chapter);
         lesson::next_exercise(&open, &order, self.output.as_ref())
     }
 
+    /// The row's first failure, in a few words, as the table shows it
+    /// (empty for a chapter that passes, `not run` for one not run).
+    pub fn first_failure(&self, root: &Path) -> String {
+        match &self.output {
+            None => "not run".to_owned(),
+            Some(o) => first_failure(o, self.next_exercise(root).map(|e| &*e.2.id), root),
+        }
+    }
+
     /// Exercises written out of all: `1/2`, or `-` for a chapter without.
-    fn exercises_done(&self) -> String {
+    pub fn exercises_done(&self) -> String {
         let total = self.exercises.len();
         let done = total - self.open_exercises().count();
         if total == 0 {
@@ -156,14 +165,11 @@ pub fn waiting_line(chapter: &ChapterEntry, running: bool) -> String {
 
 /// The table's line for one chapter; `here` marks where the student is.
 pub fn row_line(result: &ChapterResult, here: bool, root: &Path) -> String {
-    let (passed, failed, failure) = match &result.output {
-        None => ("-".into(), "-".into(), "not run".to_owned()),
-        Some(o) => (
-            o.passed.to_string(),
-            o.failed.to_string(),
-            first_failure(o, result.next_exercise(root).map(|e| &*e.2.id), root),
-        ),
+    let (passed, failed) = match &result.output {
+        None => ("-".into(), "-".into()),
+        Some(o) => (o.passed.to_string(), o.failed.to_string()),
     };
+    let failure = result.first_failure(root);
     let failure = match (result.reused, failure.is_empty()) {
         (false, _) => failure,
         (true, true) => "unchanged since the last run".to_owned(),

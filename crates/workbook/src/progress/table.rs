@@ -23,21 +23,25 @@ pub struct Table {
     root: PathBuf,
     /// Drawn again in place (a terminal), or printed a row at a time.
     in_place: bool,
+    /// Printed at all (`progress`), or only kept (the lab's call).
+    printed: bool,
     /// Lines drawn last time, to go back over.
     drawn: usize,
 }
 
 impl Table {
-    /// A table of `chapters`, none of them tested yet.
-    pub fn new(chapters: &[&'static ChapterEntry], root: &Path) -> Table {
-        let in_place = std::io::stdout().is_terminal();
+    /// A table of `chapters`, none of them tested yet, printed as it
+    /// fills if `printed` (else only kept, for [`Table::results`]).
+    pub fn new(chapters: &[&'static ChapterEntry], root: &Path, printed: bool) -> Table {
+        let in_place = printed && std::io::stdout().is_terminal();
         let table = Table {
             rows: chapters.iter().map(|c| Row::Waiting(c)).collect(),
             root: root.to_owned(),
             in_place,
+            printed,
             drawn: 0,
         };
-        if !in_place {
+        if printed && !in_place {
             println!("{}", header());
         }
         table
@@ -64,7 +68,7 @@ impl Table {
         self.rows[i] = Row::Done(result);
         if self.in_place {
             self.draw();
-        } else {
+        } else if self.printed {
             let marker = !self.passes(i) && !self.fails_before(i);
             let Row::Done(result) = &self.rows[i] else {
                 unreachable!()
@@ -81,17 +85,23 @@ impl Table {
         }
     }
 
-    /// The rows, all done, and the advice; true if every chapter run passed.
-    pub fn finish(mut self) -> bool {
-        self.draw();
-        let results: Vec<ChapterResult> = (self.rows.into_iter())
+    /// The rows done, in order.
+    pub fn results(self) -> Vec<ChapterResult> {
+        (self.rows.into_iter())
             .filter_map(|row| match row {
                 Row::Done(result) => Some(result),
                 _ => None,
             })
-            .collect();
+            .collect()
+    }
+
+    /// The rows, all done, and the advice; true if every chapter run passed.
+    pub fn finish(mut self) -> bool {
+        self.draw();
+        let root = self.root.clone();
+        let results = self.results();
         let here = here(&results);
-        println!("\n{}", next_step(&results, here, &self.root));
+        println!("\n{}", next_step(&results, here, &root));
         here.is_none()
     }
 

@@ -7,7 +7,7 @@
 //! Ctrl-C ends it: nothing is left behind, the terminal is as it was.
 
 use std::io::IsTerminal;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::Duration;
 
@@ -23,6 +23,22 @@ pub fn watch(
     root: &Path,
     mut progress: impl FnMut(Option<&Path>) -> Result<bool, String>,
 ) -> Result<(), String> {
+    let (_watcher, saves) = saves(root)?;
+    let mut saved = None;
+    loop {
+        clear_screen();
+        progress(saved.as_deref())?;
+        println!("\nwatching chapters/ for saves (Ctrl-C to stop)");
+        saved = next_save(&saves)?;
+    }
+}
+
+/// The saves of `.rs` and `.toml` files under `root`'s `chapters/`, as
+/// they come, each with the file saved (the lab watches with this too).
+/// They come while the watcher returned is kept.
+pub fn saves(
+    root: &Path,
+) -> Result<(impl Watcher + use<>, mpsc::Receiver<Option<PathBuf>>), String> {
     let (saved, saves) = mpsc::channel();
     let mut watcher = notify::recommended_watcher(move |event: notify::Result<notify::Event>| {
         if let Ok(event) = event
@@ -36,17 +52,16 @@ pub fn watch(
     watcher
         .watch(&chapters, RecursiveMode::Recursive)
         .map_err(|e| format!("cannot watch {}: {e}", chapters.display()))?;
-    let mut saved = None;
-    loop {
-        clear_screen();
-        progress(saved.as_deref())?;
-        println!("\nwatching chapters/ for saves (Ctrl-C to stop)");
-        // One save, then the ones that come with it.
-        saved = saves
-            .recv()
-            .map_err(|_| "the file watcher stopped".to_owned())?;
-        while saves.recv_timeout(SETTLE).is_ok() {}
-    }
+    Ok((watcher, saves))
+}
+
+/// Waits for a save, then for the ones that come with it; the file saved.
+pub fn next_save(saves: &mpsc::Receiver<Option<PathBuf>>) -> Result<Option<PathBuf>, String> {
+    let saved = saves
+        .recv()
+        .map_err(|_| "the file watcher stopped".to_owned())?;
+    while saves.recv_timeout(SETTLE).is_ok() {}
+    Ok(saved)
 }
 
 /// Is this a change to a Rust source or a TOML file (not an editor's

@@ -15,6 +15,7 @@
 //!   region (a wrong spot ramp);
 //! * `trees`: `verify --tree`: the reference trees are current, and a
 //!   student's tree that differs is named ray by ray and field by field;
+//! * `facts`: the reference's facts of every pixel, which the lab shows, are current;
 //! * `chapters`: each chapter's ray tree, as its binary builds it.
 //!
 //! Here: verifying a picture, and chapter 3's scene, which several use.
@@ -22,6 +23,7 @@
 mod camera;
 mod chapters;
 mod command;
+mod facts;
 mod lights;
 mod object_maps;
 mod trees;

@@ -13,6 +13,7 @@
 
 pub mod compare;
 pub mod difference;
+pub mod facts;
 pub mod schema;
 pub mod tolerance;
 
@@ -179,6 +180,15 @@ pub fn reference_tree(folder: &str, x: u32, y: u32) -> Option<&'static str> {
     super::SNAPSHOTS
         .get_file(tree_path(folder, x, y))
         .and_then(|f| f.contents_utf8())
+}
+
+/// The reference's facts of every pixel of a chapter's picture (see
+/// [`facts`]), built into the binary; None for a chapter without.
+pub fn reference_facts(folder: &str) -> Option<&'static [u8]> {
+    let verify = chapters::find(folder)?.verify.as_ref()?;
+    super::SNAPSHOTS
+        .get_file(facts::facts_path(folder, &verify.snapshot))
+        .map(|f| f.contents())
 }
 
 /// Parses `X,Y`.

@@ -1,0 +1,146 @@
+//! The lab's server refuses what a local server must: requests without its
+//! token, requests from another host name (DNS rebinding), paths that
+//! escape (also percent-encoded), and answers bad input with a clear error
+//! and never a panic. Plain HTTP over a socket, against a lab on a free
+//! port that runs nothing in the background (no progress, no watching).
+
+use std::io::{Read, Write};
+use std::net::TcpStream;
+use std::path::PathBuf;
+use std::sync::OnceLock;
+
+use lab::Lab;
+
+/// One lab for the whole test binary.
+fn lab() -> &'static Lab {
+    static LAB: OnceLock<Lab> = OnceLock::new();
+    LAB.get_or_init(|| {
+        let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let lab = Lab::start(root, 0, false).expect("the lab starts");
+        lab.serve_in_background();
+        lab
+    })
+}
+
+/// Sends a GET of `target` with the Host header `host` (none if None);
+/// the status and the body.
+fn get_with_host(target: &str, host: Option<&str>) -> (u16, String) {
+    let mut stream = TcpStream::connect(("127.0.0.1", lab().port())).unwrap();
+    let host = host.map(|h| format!("Host: {h}\r\n")).unwrap_or_default();
+    write!(
+        stream,
+        "GET {target} HTTP/1.1\r\n{host}Connection: close\r\n\r\n"
+    )
+    .unwrap();
+    let mut bytes = Vec::new();
+    stream.read_to_end(&mut bytes).unwrap();
+    let text = String::from_utf8_lossy(&bytes);
+    let status = text
+        .split(' ')
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0);
+    let body = text.split_once("\r\n\r\n").map(|(_, b)| b).unwrap_or("");
+    (status, body.to_owned())
+}
+
+fn get(target: &str) -> (u16, String) {
+    let host = format!("127.0.0.1:{}", lab().port());
+    get_with_host(target, Some(&host))
+}
+
+/// `target` below the lab's token.
+fn below(path: &str) -> String {
+    format!("/{}{path}", lab().token())
+}
+
+#[test]
+fn the_page_needs_the_token() {
+    let (status, body) = get(&below("/"));
+    assert_eq!(status, 200);
+    assert!(body.contains("<title>raybook lab</title>"), "{body}");
+    assert_eq!(get(&below("/lab.js")).0, 200);
+    assert_eq!(get("/").0, 404);
+    assert_eq!(get("/lab.js").0, 404);
+    let wrong = format!("/{}/", "0".repeat(32));
+    assert_eq!(get(&wrong).0, 404);
+    assert!(lab().url().starts_with("http://127.0.0.1:"));
+}
+
+#[test]
+fn a_foreign_host_is_refused() {
+    let port = lab().port();
+    for host in [
+        format!("evil.example:{port}"),
+        format!("127.0.0.1.evil.example:{port}"),
+        "evil.example".to_owned(),
+    ] {
+        let (status, body) = get_with_host(&below("/"), Some(&host));
+        assert_eq!(status, 403, "{host}");
+        assert!(body.contains("not the loopback address"), "{body}");
+    }
+    assert_eq!(get_with_host(&below("/"), None).0, 403, "no Host at all");
+    let local = format!("localhost:{port}");
+    assert_eq!(get_with_host(&below("/"), Some(&local)).0, 200);
+}
+
+#[test]
+fn escaping_paths_get_404() {
+    for path in [
+        "/../Cargo.toml",
+        "/%2e%2e/Cargo.toml",
+        "/%2E%2E%2FCargo.toml",
+        "/pictures/02-hits/../../../../etc/passwd",
+        "/pictures/02-hits/%2e%2e%2f%2e%2e%2fCargo.toml",
+        "/pictures/..%2f..%2fsnapshots/02-hits/flat.snap.png",
+        "/pictures/02-hits/..%5c..%5cCargo.toml",
+        "/Cargo.toml",
+        "/snapshots/02-hits/flat.snap.png",
+        "/pictures/02-hits/yours.png%00.png",
+        "//etc/passwd",
+    ] {
+        let (status, _) = get(&below(path));
+        assert_eq!(status, 404, "{path}");
+    }
+    // The reference pictures are its own.
+    assert_eq!(get(&below("/pictures/02-hits/reference.png")).0, 200);
+}
+
+#[test]
+fn bad_input_gets_a_clear_error() {
+    let cases = [
+        (
+            "/api/pixel?chapter=99-nope&x=1&y=1",
+            "no chapter \"99-nope\"; the chapters are 01-rays",
+        ),
+        (
+            "/api/pixel?chapter=02-hits&x=abc&y=1",
+            "whole number from 0 to 159",
+        ),
+        (
+            "/api/pixel?chapter=02-hits&x=1&y=500",
+            "outside the picture, which is 160×120",
+        ),
+        ("/api/pixel?chapter=02-hits&x=1", "the pixel's y is missing"),
+        ("/api/pixel?x=1&y=1", "which chapter?"),
+        (
+            "/api/bench?chapter=..%2F02-hits",
+            "no chapter \"../02-hits\"",
+        ),
+        ("/api/hint?id=ch02-nope", "no exercise \"ch02-nope\""),
+        (
+            "/api/hint?id=ch02-sphere&level=7",
+            "a hint's level is 1, 2 or 3",
+        ),
+        ("/api/hint?id=%ff", "not valid percent-encoded UTF-8"),
+    ];
+    for (path, expected) in cases {
+        let (status, body) = get(&below(path));
+        assert_eq!(status, 400, "{path}: {body}");
+        let error: serde_json::Value = serde_json::from_str(&body).unwrap();
+        let error = error["error"].as_str().unwrap();
+        assert!(error.contains(expected), "{path}: {error}");
+    }
+    // The server still answers after all of them.
+    assert_eq!(get(&below("/api/state")).0, 200);
+}
