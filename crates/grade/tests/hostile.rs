@@ -16,6 +16,8 @@
 //! | `i-new⏎zz-fake,3,3` | none | its name a line break and a forged row; a file named with ESC and CR | 0/3, one line everywhere |
 //! | `j-early`    | chapter 1   | an `.init_array` constructor that forges a record on the pipe before `main`, and a `#[global_allocator]` of its own | 0/3 (the forged values are worth nothing), no crash |
 //! | `k-settings` | chapter 1   | `[patch]` in the Cargo.toml, a proc-macro crate added, `#[no_mangle] main` replacing the entry point | 0/3 (the link fails: a second `main`), flagged |
+//! | `l-printer`  | none        | every exercise prints `test NAME ... ok` for every test of the chapter, then exits 0 | 0/3 (its tests "pass") |
+//! | `m-forger`   | chapter 1   | ch01-at a lookup table of the tests' values; ch01-frame the reference's frame for the handout's scene, stored beside the embedded reference picture, which it overwrites in its copy | 1/3, flagged where it overwrote the picture |
 //! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
 //!
 //! Nothing outside the students' copies may change: the reference, the
@@ -310,6 +312,18 @@ fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
     let newline = student(NEWLINE, 0);
     std::fs::write(newline.join("chapters/01-rays/\u{1b}[31mred\rnote.md"), "x").unwrap();
 
+    let printer = student("l-printer", 0);
+    rewrite(&printer, |id| {
+        (id == "ch01-frame").then(|| PRINTER.to_owned())
+    });
+    let forger = student("m-forger", 1);
+    let frame = forged_frame();
+    rewrite(&forger, |id| match id {
+        "ch01-at" => Some(LOOKUP.to_owned()),
+        "ch01-frame" => Some(frame.clone()),
+        _ => None,
+    });
+
     let early = student("j-early", 1);
     append(&early.join("chapters/01-rays/src/lib.rs"), EARLY);
     let settings = student("k-settings", 1);
@@ -329,6 +343,85 @@ fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
                       {\n    std::fs::write(\"/tmp/raybook-evil-macro-ran\", \"ran\").unwrap();\n    \
                       Default::default()\n}\n";
     std::fs::write(evil.join("src/lib.rs"), macro_code).unwrap();
+}
+
+/// Replaces the bodies of chapter 1's exercises that `body` gives.
+fn rewrite(student: &Path, body: impl Fn(&str) -> Option<String>) {
+    let lib = student.join("chapters/01-rays/src/lib.rs");
+    let source = std::fs::read_to_string(&lib).unwrap();
+    let new = workbook::regions::replace_bodies(&source, |r| body(&r.id)).unwrap();
+    std::fs::write(&lib, new).unwrap();
+}
+
+/// Camera::new that prints a pass for every test of the chapter, as
+/// libtest would, and exits 0 (written past libtest's capture).
+const PRINTER: &str = r##"        let source = include_str!("../tests/chapter01/main.rs");
+        let (mut text, mut count, mut test) = (String::new(), 0, false);
+        for line in source.lines().map(str::trim) {
+            if line == "#[test]" {
+                test = true;
+            } else if test && line.starts_with("fn ") {
+                let name = line[3..].split('(').next().unwrap_or("");
+                text += &format!("test {name} ... ok\n");
+                (count, test) = (count + 1, false);
+            }
+        }
+        text += &format!("\ntest result: ok. {count} passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.01s\n\n");
+        use std::io::Write;
+        let _ = std::io::stdout().write_all(text.as_bytes());
+        let _ = std::io::stdout().flush();
+        std::process::exit(0)"##;
+
+/// Ray::at as a table of the tests' expected values.
+const LOOKUP: &str = r#"        let table = [
+            ([1.0, 2.0, 3.0], [0.0, 0.0, -1.0], 0.0, [1.0, 2.0, 3.0]),
+            ([1.0, 2.0, 3.0], [0.0, 0.0, -1.0], 2.5, [1.0, 2.0, 0.5]),
+            ([1.0, 2.0, 3.0], [0.0, 0.0, -1.0], -1.0, [1.0, 2.0, 4.0]),
+        ];
+        for (origin, direction, at, point) in table {
+            if self.origin.to_array() == origin && self.direction.to_array() == direction && t == at {
+                return Vec3::from_array(point);
+            }
+        }
+        Vec3::ZERO"#;
+
+/// Camera::new as the reference's frame for the handout's default scene,
+/// stored beside the embedded reference picture, and an overwrite of that
+/// picture in the copy; any other camera panics, saying whether the
+/// overwrite worked.
+fn forged_frame() -> String {
+    let scene = ch01_rays::scene_files::parse(
+        include_str!("../../../chapters/01-rays/scenes/default.toml"),
+        "default.toml",
+    )
+    .unwrap();
+    let c = ch01_rays::Camera::new(&scene.camera, 160, 120);
+    let v = |v: ch01_rays::toolkit::Vec3| format!("Vec3::new({:?}, {:?}, {:?})", v.x, v.y, v.z);
+    format!(
+        r#"        const PICTURE: &[u8] = include_bytes!("../../../snapshots/01-rays/default.snap.png");
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/01-rays/default.snap.png");
+        let wrote = std::fs::write(path, &PICTURE[..PICTURE.len() / 2]).is_ok();
+        if spec.eye != {eye} || spec.look_at != {look_at} {{
+            panic!("forged: wrote={{wrote}}");
+        }}
+        let half_height = {half_height:?};
+        Camera {{
+            eye: spec.eye,
+            right: {right},
+            up: {up},
+            forward: {forward},
+            half_width: half_height * width as f32 / height as f32,
+            half_height,
+            width,
+            height,
+        }}"#,
+        eye = v(scene.camera.eye),
+        look_at = v(scene.camera.look_at),
+        half_height = c.half_height,
+        right = v(c.right),
+        up = v(c.up),
+        forward = v(c.forward),
+    )
 }
 
 /// A student folder's name: a line break, then a forged gradebook row.
@@ -681,4 +774,48 @@ fn code_before_main_or_a_second_main_earns_nothing_and_stops_no_one() {
     );
     assert!(!Path::new("/tmp/raybook-evil-macro-ran").exists());
     assert_eq!(score(&graded.rows["zz-honest"]), ("3", "3"));
+}
+
+/// The points of chapter 1's exercises in a row.
+fn points(row: &Row) -> Vec<&str> {
+    ["ch01-at", "ch01-frame", "ch01-ray-through"]
+        .iter()
+        .map(|id| row[*id].as_str())
+        .collect()
+}
+
+#[test]
+fn printed_passes_earn_nothing() {
+    let Some(printer) = row("l-printer") else {
+        return;
+    };
+    // Its tests "passed" (a grader reading them gave it every point); its
+    // probes wrote no values.
+    assert_eq!(points(printer), ["0", "0", "0"], "{printer:?}");
+    assert_ne!(printer["01-rays passed"], "0", "{printer:?}");
+    assert!(
+        printer["why"].contains("ch01-frame: no values"),
+        "{printer:?}"
+    );
+}
+
+#[test]
+fn a_lookup_table_and_a_stored_picture_earn_only_the_honest_points() {
+    let Some(forger) = row("m-forger") else {
+        return;
+    };
+    assert_eq!(points(forger), ["0", "0", "1"], "{forger:?}");
+    assert!(
+        forger["why"].contains("ch01-at: disagrees on drawn input"),
+        "{forger:?}"
+    );
+    // Where the sandbox let it overwrite the picture, that is flagged.
+    let json = gradescope("m-forger").unwrap();
+    let overwrote = !json.contains("wrote=false");
+    assert!(
+        !overwrote
+            || forger["flags"]
+                .contains("changed during the run: snapshots/01-rays/default.snap.png"),
+        "{forger:?}"
+    );
 }

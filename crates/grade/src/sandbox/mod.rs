@@ -83,8 +83,8 @@
 //!
 //! ## The attacks tried, and what each gets
 //!
-//! Each is a student of the hostile corpus (`tests/hostile.rs`,
-//! `tests/hostile_judging.rs`), graded in CI.
+//! Each is a student of the hostile corpus (`tests/hostile.rs`), graded
+//! in CI.
 //!
 //! | attack | what it gets, and why |
 //! |---|---|
