@@ -78,8 +78,8 @@ fn summary(class: &Class, student: &StudentResult) -> String {
     }
     if !student.flags.is_empty() {
         lines.push(
-            "You changed files that grading takes from the reference (graded on the \
-             reference's):"
+            "Flagged for your teacher (files grading takes from the reference, which it \
+             used instead; what grading refused to read; what your runs left):"
                 .to_owned(),
         );
         lines.extend(student.flags.iter().map(|f| format!("  {}", clean_line(f))));
