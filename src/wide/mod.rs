@@ -22,6 +22,11 @@
 //! - a scene of a few objects gets no tree: its packets are tested in turn,
 //!   each packet of triangles or cone after its own box.
 //!
+//! - chapter 2's rule for coincident surfaces is applied in the same walk
+//!   that finds the nearest hit (`rule.rs`), not in a second one;
+//! - a triangle's t in f64 is worked out only where the watertight test's
+//!   own f32 t, with its error bound, cannot rule the triangle out (`packet.rs`).
+//!
 //! The tests are chapter 2's, to the last bit, and the closest hit is
 //! chosen as chapter 2 chooses it, so the pictures equal brute force's.
 //! What it buys is measured in chapter 8's text and book/appendix/performance.md.

@@ -6,7 +6,9 @@
 //! each lane, so each lane's answer is the scalar test's to the last bit:
 //! - four triangles go through chapter 2's watertight test together, up to
 //!   the barycentric weights; a lane the ray passes through gets its t from
-//!   chapter 2's `triangle_plane_t` (in f64, one lane at a time), and a lane
+//!   chapter 2's `triangle_plane_t` (in f64, one lane at a time), unless the
+//!   test's own f32 t, with its error bound, puts it surely outside the
+//!   range looked in (or, for a shadow ray, surely inside), and a lane
 //!   on an edge in f32 (an edge function exactly 0, which chapter 2 decides
 //!   again in f64) goes alone through chapter 2's `intersect_triangle`;
 //! - four spheres go through the f32 test that rules out rays that pass

@@ -2,15 +2,19 @@
 //! every primary ray with the rule (`closest_hit`) against the nearest hit
 //! alone (`nearest_hit`, or chapter 2's `closest_hit_by` for a list).
 //!
-//! The rule costs a second look only when the nearest hit's object is not
-//! the first listed: through the objects listed before it (a list), or a
-//! second walk of the tree through the boxes that the ray crosses in the
-//! window around the hit (the BVHs). Rays that hit nothing cost nothing
+//! The rule costs something only when the nearest hit's object is not the
+//! first listed: a second look through the objects listed before it (a
+//! list); for the wide BVH, the window of the nearest hit, worked out after
+//! the one walk that found it and kept the hits that may lie in it
+//! (`src/wide/rule.rs`), and, for the rare ray whose window reaches past
+//! what the walk kept, a second walk. Rays that hit nothing cost nothing
 //! more.
 //!
 //! Run with `cargo bench --bench coincident`. As in `--bench small`, the
 //! two are timed in alternation, round after round, and the median of the
-//! per-round ratios is printed.
+//! per-round ratios is printed; here the time is the thread's CPU time, and
+//! each way goes first in every other round (on a machine shared with
+//! other builds, wall times and a fixed order moved the ratios by ±10%).
 
 use std::hint::black_box;
 use std::path::Path;
