@@ -4,6 +4,7 @@
 //! take the second walk; all must give chapter 2's hit, to the last bit.
 
 use test_support::Rng;
+use test_support::coincident::{coplanar, object, shuffle};
 
 use super::{PreparedRay, WideBvh, rule};
 use crate::toolkit::Vec3;
@@ -12,45 +13,16 @@ use crate::tracer::{Ray, closest_hit, coincident_range};
 
 const INF: f32 = f32::INFINITY;
 
-fn object(shape: Shape) -> Object {
-    Object {
-        shape,
-        material: 0,
-        shadows: true,
-    }
-}
-
 /// A plane through `at` with normal `n`, `count` triangles of it that
 /// overlap around `at` (corners its points rounded to f32), and a sphere
 /// touching it, in a shuffled order.
 fn coincident_scene(rng: &mut Rng, n: Vec3, at: Vec3, count: usize) -> Vec<Object> {
-    let (a, b) = (
-        n.any_orthonormal_vector(),
-        n.cross(n.any_orthonormal_vector()),
-    );
-    let mut objects = vec![
-        object(Shape::Plane {
-            normal: n,
-            offset: -n.dot(at),
-        }),
-        object(Shape::Sphere {
-            center: at + n,
-            radius: 1.0,
-        }),
-    ];
-    for _ in 0..count {
-        let centre = at + rng.range(-2.0, 2.0) * a + rng.range(-2.0, 2.0) * b;
-        let size = rng.range(0.5, 3.0);
-        let vertices = [0.0f32, 2.1, 4.2].map(|angle| {
-            let angle = angle + rng.range(0.0, 1.0);
-            centre + size * (angle.cos() * a + angle.sin() * b)
-        });
-        objects.push(object(Shape::Triangle { vertices }));
-    }
-    for i in (1..objects.len()).rev() {
-        let j = ((rng.range(0.0, 1.0) * (i + 1) as f32) as usize).min(i);
-        objects.swap(i, j);
-    }
+    let mut objects = coplanar(rng, n, at, count);
+    objects.push(object(Shape::Sphere {
+        center: at + n,
+        radius: 1.0,
+    }));
+    shuffle(rng, &mut objects);
     objects
 }
 
