@@ -3,6 +3,22 @@
 
 use super::primitive::Weights;
 
+/// A hit a packet found: t, the object's index, and the hit's barycentric
+/// weights if a triangle's.
+pub type Found = (f32, u32, Weights);
+
+/// What a walk through the tree offers its hits to: the nearest hit alone
+/// ([`Closest`]), or the nearest with the hits that may coincide with it
+/// (`rule.rs`).
+pub trait Offer {
+    /// Hits are looked for below this; the walk skips every box the ray
+    /// enters only beyond it.
+    fn limit(&self) -> f32;
+
+    /// A hit at t < limit() of `object`.
+    fn offer(&mut self, hit: (f32, Weights), object: u32);
+}
+
 /// The closest hit so far, chosen as chapter 2's loop chooses: the smallest
 /// t, and of equal t's the object that comes first in the scene. Or, for
 /// the second look that chapter 2's rule for coincident surfaces takes
@@ -16,8 +32,7 @@ pub struct Closest {
     limit: f32,
     /// For the rule: only objects listed before this one can win.
     before: Option<u32>,
-    /// t, object index, and the hit's barycentric weights if a triangle's.
-    pub found: Option<(f32, u32, Weights)>,
+    pub found: Option<Found>,
 }
 
 impl Closest {
@@ -38,17 +53,18 @@ impl Closest {
             found: None,
         }
     }
+}
 
-    /// Hits are looked for below this.
+impl Offer for Closest {
     #[inline]
-    pub fn limit(&self) -> f32 {
+    fn limit(&self) -> f32 {
         self.limit
     }
 
-    /// A hit at t < limit(): kept if nearer, or as near and earlier; for
-    /// the rule, if listed before every other found.
+    /// Kept if nearer, or as near and earlier; for the rule, if listed
+    /// before every other found.
     #[inline]
-    pub fn offer(&mut self, (t, weights): (f32, Weights), object: u32) {
+    fn offer(&mut self, (t, weights): (f32, Weights), object: u32) {
         if let Some(before) = self.before {
             if object < before {
                 self.found = Some((t, object, weights));

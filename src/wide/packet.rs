@@ -6,7 +6,9 @@
 //! each lane, so each lane's answer is the scalar test's to the last bit:
 //! - four triangles go through chapter 2's watertight test together, up to
 //!   the barycentric weights; a lane the ray passes through gets its t from
-//!   chapter 2's `triangle_plane_t` (in f64, one lane at a time), and a lane
+//!   chapter 2's `triangle_plane_t` (in f64, one lane at a time), unless the
+//!   test's own f32 t, with its error bound, puts it surely outside the
+//!   range looked in (or, for a shadow ray, surely inside), and a lane
 //!   on an edge in f32 (an edge function exactly 0, which chapter 2 decides
 //!   again in f64) goes alone through chapter 2's `intersect_triangle`;
 //! - four spheres go through the f32 test that rules out rays that pass
@@ -20,7 +22,7 @@
 
 use glam::{BVec4A, Vec4};
 
-use super::closest::Closest;
+use super::closest::Offer;
 use super::primitive::{Geometry, PreparedRay, Primitive, Weights};
 use ch08_bvh::Aabb;
 
@@ -143,7 +145,7 @@ impl Packet {
     /// closest.limit()), the limit asked again before each offer: chapter
     /// 2's answers, lane by lane.
     #[inline(always)]
-    pub fn offer_hits(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
+    pub fn offer_hits(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
         match &self.shapes {
             Shapes::Spheres(spheres) => {
                 for lane in lanes(spheres.might_hit(ray).bitmask() & self.used) {
@@ -157,10 +159,21 @@ impl Packet {
             }
             Shapes::Triangles(triangles) => {
                 let found = triangles.intersect(ray);
-                for lane in lanes(found.hit & self.used) {
-                    let t = triangles.t(lane, ray.ray);
-                    if t.is_finite() && t > t_min && t < closest.limit() {
-                        closest.offer((t, found.weights(lane)), self.object[lane]);
+                let through = found.hit & self.used;
+                if through != 0 {
+                    let range = triangles.t_range(ray, &found);
+                    let maybe = range.may_lie_within(t_min, closest.limit()) & through;
+                    debug_assert!(triangles.rightly_outside(
+                        through & !maybe,
+                        ray.ray,
+                        t_min,
+                        closest.limit()
+                    ));
+                    for lane in lanes(maybe) {
+                        let t = triangles.t(lane, ray.ray);
+                        if t.is_finite() && t > t_min && t < closest.limit() {
+                            closest.offer((t, found.weights(lane)), self.object[lane]);
+                        }
                     }
                 }
                 for lane in lanes(found.on_edge & self.used) {
@@ -207,11 +220,26 @@ impl Packet {
             }
             Shapes::Triangles(triangles) => {
                 let found = triangles.intersect(ray);
-                let within = |t: f32| t.is_finite() && t > t_min && t < t_max;
-                lanes(found.hit & casting).any(|lane| within(triangles.t(lane, ray.ray)))
-                    || lanes(found.on_edge & casting).any(|lane| {
-                        intersect_triangle(triangles.get(lane), ray.ray, t_min, t_max).is_some()
-                    })
+                let through = found.hit & casting;
+                if through != 0 {
+                    let range = triangles.t_range(ray, &found);
+                    let surely = range.surely_within(t_min, t_max) & through;
+                    debug_assert!(triangles.rightly_within(surely, ray.ray, t_min, t_max));
+                    let maybe = range.may_lie_within(t_min, t_max) & through;
+                    debug_assert!(triangles.rightly_outside(
+                        through & !maybe,
+                        ray.ray,
+                        t_min,
+                        t_max
+                    ));
+                    let within = |t: f32| t.is_finite() && t > t_min && t < t_max;
+                    if surely != 0 || lanes(maybe).any(|lane| within(triangles.t(lane, ray.ray))) {
+                        return true;
+                    }
+                }
+                lanes(found.on_edge & casting).any(|lane| {
+                    intersect_triangle(triangles.get(lane), ray.ray, t_min, t_max).is_some()
+                })
             }
             Shapes::Cone(cone) => cone.intersect(ray, t_min, t_max).is_some(),
         }
@@ -375,13 +403,43 @@ fn surely_meets(q: &Quadratic, t_max: f32) -> bool {
 
 /// What the four-lane triangle test found.
 struct Found {
-    /// Bit i: lane i's triangle is met in (t_min, t_max), at lane i of `t`.
+    /// Bit i: the ray passes through lane i's triangle (not on an edge).
     hit: u32,
     /// Bit i: lane i is on an edge in f32, to be decided in f64.
     on_edge: u32,
+    /// The corners' x and y in the ray's space.
+    x: [Vec4; 3],
+    y: [Vec4; 3],
+    /// The edge functions and their sum.
+    u: Vec4,
     v: Vec4,
     w: Vec4,
     determinant: Vec4,
+}
+
+/// Bounds on each lane's t, as chapter 2 finds it, from the watertight
+/// test's own f32 t (`Triangles::t_range`): the exact t lies in [low, high].
+struct TRange {
+    low: Vec4,
+    high: Vec4,
+}
+
+impl TRange {
+    /// Lanes whose t may lie in (t_min, t_max): all but those surely at or
+    /// below t_min or at or above t_max (and a lane whose bounds are not
+    /// numbers may).
+    #[inline(always)]
+    fn may_lie_within(&self, t_min: f32, t_max: f32) -> u32 {
+        let below = self.high.cmplt(Vec4::splat(t_min));
+        let beyond = self.low.cmpgt(Vec4::splat(t_max));
+        !(below | beyond).bitmask() & 0b1111
+    }
+
+    /// Lanes whose t surely lies in (t_min, t_max).
+    #[inline(always)]
+    fn surely_within(&self, t_min: f32, t_max: f32) -> u32 {
+        (self.low.cmpgt(Vec4::splat(t_min)) & self.high.cmplt(Vec4::splat(t_max))).bitmask()
+    }
 }
 
 impl Found {
@@ -441,9 +499,77 @@ impl Triangles {
         Found {
             hit: (inside & !on_edge).bitmask(),
             on_edge: on_edge.bitmask(),
+            x: [x0, x1, x2],
+            y: [y0, y1, y2],
+            u,
             v,
             w,
             determinant,
         }
+    }
+
+    /// Bounds on each lane's t, for the lanes the ray passes through: the
+    /// watertight test's own t in f32, t = (u·z₀ + v·z₁ + w·z₂) / (u + v + w)
+    /// with zᵢ the corners' distances along the ray, plus or minus a bound
+    /// on its rounding error. Chapter 2's t (`triangle_plane_t`, in f64) is
+    /// exact to its rounding to f32, so it lies within the bounds too.
+    ///
+    /// The bound is pbrt-v4's (Pharr, Jakob and Humphreys, section 6.8.4,
+    /// "Conservative Ray–Triangle t Tests"), with γₙ = nu/(1 − nu), u = ε/2:
+    /// the corners' z are off by δz = γ₃·max|zᵢ|, their x and y by
+    /// δx = γ₅(max|xᵢ| + max|p\[kz\]|) (and δy alike), the edge functions by
+    /// δe = 2(γ₂·max|xᵢ|·max|yᵢ| + δy·max|xᵢ| + δx·max|yᵢ|), so t by
+    ///
+    /// ```text
+    /// δt = 3(γ₃·max|eᵢ|·max|zᵢ| + δe·max|zᵢ| + δz·max|eᵢ|) / |u + v + w|
+    /// ```
+    ///
+    /// Taken twice, plus γ₄|t| for the division and the sum below it: a
+    /// lane's f64 t is needed only where these bounds leave it in doubt.
+    #[inline(always)]
+    fn t_range(&self, ray: &mut PreparedRay, found: &Found) -> TRange {
+        const fn gamma(n: f32) -> f32 {
+            let u = f32::EPSILON / 2.0;
+            n * u / (1.0 - n * u)
+        }
+        let shear = ray.shear();
+        let [(z0, a0), (z1, a1), (z2, a2)] = self
+            .corners
+            .each_ref()
+            .map(|c| shear.depth4(&ray.origin, c));
+        let largest = |[a, b, c]: [Vec4; 3]| a.abs().max(b.abs()).max(c.abs());
+        let (max_x, max_y, max_z) = (largest(found.x), largest(found.y), largest([z0, z1, z2]));
+        let max_e = largest([found.u, found.v, found.w]);
+        let max_pz = a0.max(a1).max(a2);
+        let delta_x = gamma(5.0) * (max_x + max_pz);
+        let delta_y = gamma(5.0) * (max_y + max_pz);
+        let delta_z = gamma(3.0) * max_z;
+        let delta_e = 2.0 * (gamma(2.0) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        let sum = gamma(3.0) * max_e * max_z + delta_e * max_z + delta_z * max_e;
+        let delta_t = 3.0 * sum / found.determinant.abs();
+        let t = (found.u * z0 + found.v * z1 + found.w * z2) / found.determinant;
+        let bound = 2.0 * delta_t + gamma(4.0) * t.abs();
+        TRange {
+            low: t - bound,
+            high: t + bound,
+        }
+    }
+
+    /// For the debug assertions: chapter 2's t of each lane in `mask` lies
+    /// outside (t_min, t_max), as the bounds said.
+    fn rightly_outside(&self, mask: u32, ray: &Ray, t_min: f32, t_max: f32) -> bool {
+        lanes(mask).all(|lane| {
+            let t = self.t(lane, ray);
+            !(t.is_finite() && t > t_min && t < t_max)
+        })
+    }
+
+    /// For the debug assertions: chapter 2's t of each lane in `mask` lies
+    /// in (t_min, t_max), as the bounds said.
+    fn rightly_within(&self, mask: u32, ray: &Ray, t_min: f32, t_max: f32) -> bool {
+        lanes(mask).all(|lane| {
+            let t = self.t(lane, ray);
+            t.is_finite() && t > t_min && t < t_max
+        })
     }
 }

@@ -118,6 +118,9 @@ pub struct Shear {
     axes: [usize; 3],
     /// sx = rd\[kx\] / rd\[kz\], sy = rd\[ky\] / rd\[kz\].
     scale: [f32; 2],
+    /// sz = 1 / rd\[kz\]: a corner's z in the ray's space is its distance
+    /// along the ray (for the f32 estimate of t only).
+    depth: f32,
 }
 
 impl Shear {
@@ -131,7 +134,18 @@ impl Shear {
         Shear {
             axes: [kx, ky, kz],
             scale: [d[kx] / d[kz], d[ky] / d[kz]],
+            depth: 1.0 / d[kz],
         }
+    }
+
+    /// Four corners' z in the ray's space, z = sz·p\[kz\] with p the corner
+    /// less r0, and |p\[kz\]|, each in four lanes (for
+    /// `Triangles::t_range`).
+    #[inline(always)]
+    pub fn depth4(&self, origin: &[Vec4; 3], corner: &[Vec4; 3]) -> (Vec4, Vec4) {
+        let kz = self.axes[2];
+        let p = corner[kz] - origin[kz];
+        (Vec4::splat(self.depth) * p, p.abs())
     }
 
     /// Four corners in the ray's space, x and y (the test needs no z: t

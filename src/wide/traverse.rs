@@ -5,7 +5,7 @@ use arrayvec::ArrayVec;
 use ch08_bvh::MAX_DEPTH;
 
 use super::WideBvh;
-use super::closest::Closest;
+use super::closest::Offer;
 use super::node::{Child, Node4, Slabs};
 use super::packet::Packet;
 use super::primitive::PreparedRay;
@@ -17,7 +17,7 @@ const STACK: usize = 3 * MAX_DEPTH + 4;
 impl WideBvh<'_> {
     /// Offers `closest` every primitive hit in the boxes the ray enters
     /// before the closest hit found so far, nearer boxes first.
-    pub(super) fn closest(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
+    pub(super) fn closest(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
         if self.nodes.is_empty() {
             return;
         }
@@ -30,7 +30,7 @@ impl WideBvh<'_> {
     /// [`closest`](Self::closest) walking the tree. Not inlined: its stack
     /// would make every caller's frame several kilobytes, a small scene's too.
     #[inline(never)]
-    fn closest_in_tree(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
+    fn closest_in_tree(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
         let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<(Child, f32), STACK>::new();
         stack.push((Child::Node(0), t_min));
@@ -95,7 +95,7 @@ impl WideBvh<'_> {
     /// A small scene's [`closest`](Self::closest): every packet in turn,
     /// spheres first (so that their hits shorten the ray), the others only
     /// if the ray enters their box before the closest hit so far.
-    fn offer_flat(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
+    fn offer_flat(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
         let (origin, inverse) = (ray.ray.origin, ray.ray.direction.recip());
         for (packet, bounds) in self.packets.iter().zip(&self.flat_boxes) {
             if bounds.is_none_or(|b| b.entry(origin, inverse, t_min, closest.limit()).is_some()) {
@@ -121,7 +121,7 @@ impl WideBvh<'_> {
 
 /// Offers `closest` the hits of a leaf's packets.
 #[inline]
-fn offer_leaf(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, closest: &mut Closest) {
+fn offer_leaf(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
     for packet in packets {
         packet.offer_hits(ray, t_min, closest);
     }

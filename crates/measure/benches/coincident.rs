@@ -2,19 +2,25 @@
 //! every primary ray with the rule (`closest_hit`) against the nearest hit
 //! alone (`nearest_hit`, or chapter 2's `closest_hit_by` for a list).
 //!
-//! The rule costs a second look only when the nearest hit's object is not
-//! the first listed: through the objects listed before it (a list), or a
-//! second walk of the tree through the boxes that the ray crosses in the
-//! window around the hit (the BVHs). Rays that hit nothing cost nothing
+//! The rule costs something only when the nearest hit's object is not the
+//! first listed: a second look through the objects listed before it (a
+//! list); for the wide BVH, the window of the nearest hit, worked out after
+//! the one walk that found it and kept the hits that may lie in it
+//! (`src/wide/rule.rs`), and, for the rare ray whose window reaches past
+//! what the walk kept, a second walk. Rays that hit nothing cost nothing
 //! more.
 //!
 //! Run with `cargo bench --bench coincident`. As in `--bench small`, the
 //! two are timed in alternation, round after round, and the median of the
-//! per-round ratios is printed.
+//! per-round ratios is printed; here the time is the thread's CPU time, and
+//! each way goes first in every other round (on a machine shared with
+//! other builds, wall times and a fixed order moved the ratios by ±10%).
 
 use std::hint::black_box;
 use std::path::Path;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+#[cfg(not(unix))]
+use std::time::Instant;
 
 use measure::bench::median;
 use raybook::scene_files::{self, nff};
@@ -60,15 +66,17 @@ type Trace<'a> = Box<dyn Fn(&Ray) -> Option<Hit> + 'a>;
 /// Median time of each way over the rays, in alternation, and the median
 /// ratio of the second to the first within a round.
 fn interleaved(rays: &[Ray], ways: &[Trace; 2]) -> (f64, f64, f64) {
-    const ROUNDS: usize = 15;
     let mut times: [Vec<Duration>; 2] = Default::default();
-    for _ in 0..ROUNDS {
-        for (i, trace) in ways.iter().enumerate() {
-            let start = Instant::now();
+    for round in 0..rounds() {
+        // Each way goes first in every other round: neither gains from
+        // following the other (caches, the clock's frequency).
+        for i in [round % 2, 1 - round % 2] {
+            let trace = &ways[i];
+            let start = thread_time();
             for ray in rays {
                 black_box(trace(ray));
             }
-            times[i].push(start.elapsed());
+            times[i].push(thread_time() - start);
         }
     }
     let ms = |d: &Duration| d.as_secs_f64() * 1e3;
@@ -78,6 +86,36 @@ fn interleaved(rays: &[Ray], ways: &[Trace; 2]) -> (f64, f64, f64) {
         median(times[1].iter().map(ms)),
         median(ratios),
     )
+}
+
+/// The CPU time this thread has run: on a machine shared with other work,
+/// the time the rays took, without the time the thread waited for a core
+/// (wall time where there is no such clock).
+#[cfg(unix)]
+fn thread_time() -> Duration {
+    let mut now = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: clock_gettime only writes the timespec it is given.
+    let status = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut now) };
+    assert_eq!(status, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID)");
+    Duration::new(now.tv_sec as u64, now.tv_nsec as u32)
+}
+
+#[cfg(not(unix))]
+fn thread_time() -> Duration {
+    static START: std::sync::OnceLock<Instant> = std::sync::OnceLock::new();
+    START.get_or_init(Instant::now).elapsed()
+}
+
+/// Rounds of the two ways in alternation: 15, or `BENCH_ROUNDS` (on a
+/// loaded machine, more rounds give a steadier median).
+fn rounds() -> usize {
+    std::env::var("BENCH_ROUNDS")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(15)
 }
 
 /// The share of rays whose nearest object is not the first listed, which
@@ -129,6 +167,7 @@ fn main() {
         }
     }
     println!(
-        "\n(256×192 primary rays, one thread; median of 15 rounds, the two ways in alternation)"
+        "\n(256×192 primary rays, one thread's CPU time; median of {} rounds, the two ways in alternation)",
+        rounds()
     );
 }

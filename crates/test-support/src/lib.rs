@@ -2,9 +2,11 @@
 //! random numbers ([`Rng`]), proptest strategies for shapes
 //! ([`strategies`]), running a binary with its output closed
 //! ([`closed_pipe`]), reading the bench's Markdown tables
-//! ([`table_row`]) and listing the files under a folder ([`files_under`]).
+//! ([`table_row`]), listing the files under a folder ([`files_under`]) and
+//! scenes of coincident surfaces ([`coincident`]).
 
 pub mod closed_pipe;
+pub mod coincident;
 mod files;
 pub mod strategies;
 pub mod table_row;
