@@ -1,12 +1,11 @@
 //! The chapters the lab shows, and running a chapter's own binary (the
 //! debug build that its tests and `progress` made, or that the lab builds).
 
-use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
-use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use workbook::progress::read_all;
 use workbook::verify::tree::facts::SIZE;
 use workbook::workbench::chapters::{self, ChapterEntry};
 
@@ -96,18 +95,6 @@ pub fn run(root: &Path, chapter: &ChapterEntry, extra: &[&str]) -> Result<Output
         status,
         stdout: stdout.join().unwrap_or_default(),
         stderr: stderr.join().unwrap_or_default(),
-    })
-}
-
-/// Reads all of a pipe in a thread of its own (so that neither pipe of a
-/// child fills up while the other is read).
-fn read_all(pipe: Option<impl Read + Send + 'static>) -> JoinHandle<Vec<u8>> {
-    std::thread::spawn(move || {
-        let mut bytes = Vec::new();
-        if let Some(mut pipe) = pipe {
-            let _ = pipe.read_to_end(&mut bytes);
-        }
-        bytes
     })
 }
 

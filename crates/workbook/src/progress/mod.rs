@@ -29,6 +29,7 @@ mod order;
 mod parse;
 mod report;
 mod run;
+pub use run::read_all;
 mod table;
 pub mod watch;
 

@@ -75,8 +75,9 @@ fn finish(child: &mut Child, tests: &Path) -> Result<TestOutput, String> {
 }
 
 /// Reads all of a pipe, in a thread of its own (so that neither of a
-/// child's pipes fills up while the other is read).
-fn read_all(pipe: Option<impl Read + Send + 'static>) -> JoinHandle<Vec<u8>> {
+/// child's pipes fills up while the other is read). The lab runs chapter
+/// binaries with it too.
+pub fn read_all(pipe: Option<impl Read + Send + 'static>) -> JoinHandle<Vec<u8>> {
     std::thread::spawn(move || {
         let mut bytes = Vec::new();
         if let Some(mut pipe) = pipe {
