@@ -136,14 +136,22 @@ fn at_floor_is_not_claimed_when_the_standard_error_forbids_it() {
     row.bias2.se = 2e-6;
     assert_eq!(verdict(&row), Verdict::Unresolved);
     let cell = bias_cell(&row, floor);
-    assert!(cell.contains("can't tell") && !cell.contains("at floor"), "{cell}");
+    assert!(
+        cell.contains("can't tell") && !cell.contains("at floor"),
+        "{cell}"
+    );
     // A negative estimate, as noise can give, is no better evidence: its
     // upper bound 0 is below the limit, but 2 SE are 70 times the room.
     row.bias2 = Estimate {
         value: -2e-4,
         se: 1e-4,
     };
-    assert_eq!(verdict(&row), Verdict::Unresolved, "{}", bias_cell(&row, floor));
+    assert_eq!(
+        verdict(&row),
+        Verdict::Unresolved,
+        "{}",
+        bias_cell(&row, floor)
+    );
     // With 4 seeds, 2 SE = 2e-4 against room 3e-6: (2e-4/3e-6)² × 12 ≈
     // 53000 = K(K−1), so K ≈ 231.
     let seeds = floor.seeds_to_tell(row.bias2, 4);
@@ -175,7 +183,11 @@ fn the_mean_mse_splits_into_bias_squared_and_variance() {
         assert_eq!(r.renders, 4, "{name}: four seeds");
         match r.setting.sampling {
             Sampling::Centre => {
-                assert_eq!(r.variance, Estimate::exact(0.0), "{name}: no seed, no variance");
+                assert_eq!(
+                    r.variance,
+                    Estimate::exact(0.0),
+                    "{name}: no seed, no variance"
+                );
                 assert_eq!(r.bias2.se, 0.0, "{name}: known exactly");
             }
             Sampling::Jittered(_) => assert!(r.variance.value > 0.0, "{name}: seeds differ"),
@@ -320,11 +332,20 @@ fn fixture(depth: u32, samples: u32, seconds: f64, mse: f64) -> Summary {
             max: seconds,
         },
         renders: 4,
-        mse: Estimate { value: mse, se: 0.0 },
+        mse: Estimate {
+            value: mse,
+            se: 0.0,
+        },
         rmse: mse.sqrt(),
         rmse_sd: 0.0,
-        bias2: Estimate { value: 0.0, se: 0.0 },
-        variance: Estimate { value: mse, se: 0.0 },
+        bias2: Estimate {
+            value: 0.0,
+            se: 0.0,
+        },
+        variance: Estimate {
+            value: mse,
+            se: 0.0,
+        },
         relative_mse: mse,
         psnr: measure::accuracy::Psnr::of(mse * 65025.0, 100),
         pixels_off: 0.0,

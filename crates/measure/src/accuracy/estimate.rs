@@ -196,18 +196,18 @@ fn u_statistic_variance(h: &[Vec<f64>]) -> Option<f64> {
     // P: the sum over pairs; Q: of squares; T: over two pairs that share
     // one seed; D: over two disjoint pairs (from P² = Q + 2T + 2D).
     let (mut p, mut q, mut rows) = (0.0, 0.0, 0.0);
-    for j in 0..k {
-        let mut row = 0.0;
-        for i in 0..k {
+    for (j, row) in h.iter().enumerate() {
+        let mut sum = 0.0;
+        for (i, &x) in row.iter().enumerate() {
             if i != j {
-                row += h[j][i];
+                sum += x;
                 if i > j {
-                    p += h[j][i];
-                    q += h[j][i] * h[j][i];
+                    p += x;
+                    q += x * x;
                 }
             }
         }
-        rows += row * row;
+        rows += sum * sum;
     }
     let t = (rows - 2.0 * q) / 2.0;
     let d = (p * p - q - 2.0 * t) / 2.0;
@@ -263,9 +263,16 @@ mod tests {
     fn products(errors: &[Vec<f32>]) -> Vec<Vec<f64>> {
         let n = errors[0].len() as f64;
         let dot = |a: &[f32], b: &[f32]| {
-            a.iter().zip(b).map(|(&x, &y)| f64::from(x) * f64::from(y)).sum::<f64>() / n
+            a.iter()
+                .zip(b)
+                .map(|(&x, &y)| f64::from(x) * f64::from(y))
+                .sum::<f64>()
+                / n
         };
-        errors.iter().map(|a| errors.iter().map(|b| dot(a, b)).collect()).collect()
+        errors
+            .iter()
+            .map(|a| errors.iter().map(|b| dot(a, b)).collect())
+            .collect()
     }
 
     /// K renders of `n` values, each value `bias` plus uniform noise on
@@ -291,7 +298,11 @@ mod tests {
         assert!((p.bias2.value - 1.0 / 6.0).abs() < 1e-6);
         assert!((p.variance.value - 1.0 / 3.0).abs() < 1e-6);
         // sd of (0.5, 0.5, 1, 0) is √(1/6); over √4: √(1/24).
-        assert!((p.mse.se - (1.0f64 / 24.0).sqrt()).abs() < 1e-6, "{:?}", p.mse);
+        assert!(
+            (p.mse.se - (1.0f64 / 24.0).sqrt()).abs() < 1e-6,
+            "{:?}",
+            p.mse
+        );
     }
 
     #[test]
@@ -323,8 +334,8 @@ mod tests {
                 jack2 += jackknife(&products(&errors)).powi(2) / f64::from(rows);
             }
             let mean = values.iter().sum::<f64>() / f64::from(rows);
-            let spread2 = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>()
-                / f64::from(rows - 1);
+            let spread2 =
+                values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / f64::from(rows - 1);
             let known = f64::from(bias * bias);
             let se_of_mean = (spread2 / f64::from(rows)).sqrt();
             assert!(

@@ -38,11 +38,11 @@ use raybook::toolkit::{Image, Scene};
 use raybook::tracer::Termination;
 use raybook::workbench::cli::with_threads;
 
+pub use estimate::{Estimate, Split, split};
 pub use measure::{PerRay, Row, measure_rows, primary_rays, render_timed, scene_for, warm_up};
 pub use metrics::{Errors, Psnr, errors};
 pub use page::{BUDGETS, page};
 pub use reference::{REFERENCE_SEEDS, Reference, reference};
-pub use estimate::{Estimate, Split, split};
 pub use report::{
     best_within, bias_cell, by_efficiency, cost, csv, equal_rays_table, pareto, slope, table,
 };

@@ -314,8 +314,14 @@ fn time(page: &mut String, study: &Study) {
     }
     let medians: Vec<f64> = rows.iter().map(|r| per_ray(r.time.median, r)).collect();
     let spread = Spread::of(&medians);
-    let least = rows.iter().map(|r| per_ray(r.time.min, r)).fold(f64::MAX, f64::min);
-    let most_ns = rows.iter().map(|r| per_ray(r.time.max, r)).fold(0.0, f64::max);
+    let least = rows
+        .iter()
+        .map(|r| per_ray(r.time.min, r))
+        .fold(f64::MAX, f64::min);
+    let most_ns = rows
+        .iter()
+        .map(|r| per_ray(r.time.max, r))
+        .fold(0.0, f64::max);
     let _ = writeln!(
         page,
         "### What a ray costs in time\n\n\

@@ -202,7 +202,10 @@ impl Marker {
             Marker::Circle => (0..12)
                 .map(|i| {
                     let a = std::f64::consts::TAU * f64::from(i) / 12.0;
-                    ((5.5 * a.cos()).round() as i32, (5.5 * a.sin()).round() as i32)
+                    (
+                        (5.5 * a.cos()).round() as i32,
+                        (5.5 * a.sin()).round() as i32,
+                    )
                 })
                 .collect(),
             Marker::Triangle => vec![(0, -7), (6, 4), (-6, 4)],
@@ -215,9 +218,18 @@ impl Marker {
 
 /// A curve of RMSE against rays per pixel: a line through the means, a
 /// marker and a bar of ± one standard deviation over the seeds at each.
-fn draw_curve<'a, 'b: 'a>(chart: &mut LogChart<'a, 'b>, rows: &[&Summary], look: Look, label: String) -> Drawn {
+fn draw_curve<'a, 'b: 'a>(
+    chart: &mut LogChart<'a, 'b>,
+    rows: &[&Summary],
+    look: Look,
+    label: String,
+) -> Drawn {
     let y_floor = chart.y_range().start;
-    let Look { colour, marker, shift } = look;
+    let Look {
+        colour,
+        marker,
+        shift,
+    } = look;
     let points: Vec<(f64, f64)> = rows
         .iter()
         .map(|r| (shift * f64::from(r.setting.sampling.samples()), r.rmse))
@@ -281,7 +293,7 @@ fn samples_plot(study: &Study, path: &Path) -> Drawn {
                 .draw_series(DashedLineSeries::new(guide, dash, gap, style))?
                 .label(name)
                 .legend(move |(x, y)| {
-                    DashedPathElement::new([(x, y), (x + 24, y)].into_iter(), dash, gap, style)
+                    DashedPathElement::new([(x, y), (x + 24, y)], dash, gap, style)
                 });
         }
     }
@@ -419,15 +431,19 @@ fn rays_plot(study: &Study, path: &Path) -> Drawn {
 }
 
 /// The rows of one sampling as markers with their spread bars.
-fn draw_points<'a, 'b: 'a>(chart: &mut LogChart<'a, 'b>, rows: &[&Summary], look: Look, sampling: Sampling) -> Drawn {
+fn draw_points<'a, 'b: 'a>(
+    chart: &mut LogChart<'a, 'b>,
+    rows: &[&Summary],
+    look: Look,
+    sampling: Sampling,
+) -> Drawn {
     let y_floor = chart.y_range().start;
     let Look { colour, marker, .. } = look;
     let point = |r: &Summary| (cost(r), r.rmse);
     chart
-        .draw_series(
-            rows.iter()
-                .map(|r| EmptyElement::at(point(r)) + Polygon::new(marker.outline(0), colour.filled())),
-        )?
+        .draw_series(rows.iter().map(|r| {
+            EmptyElement::at(point(r)) + Polygon::new(marker.outline(0), colour.filled())
+        }))?
         .label(match sampling {
             Sampling::Centre => "one ray through each pixel's centre".to_owned(),
             Sampling::Jittered(n) => format!("{n} jittered rays per pixel"),

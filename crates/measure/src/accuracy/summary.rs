@@ -3,8 +3,8 @@
 //! standard errors, the rays, the time as a median with its spread, and
 //! what those standard errors allow saying about the reference's floor.
 
-use super::measure::Row;
 use super::estimate::Estimate;
+use super::measure::Row;
 use super::metrics::Psnr;
 use super::settings::Setting;
 
