@@ -446,6 +446,7 @@ fn draw_points<'a, 'b: 'a>(
         }))?
         .label(match sampling {
             Sampling::Centre => "one ray through each pixel's centre".to_owned(),
+            Sampling::Jittered(1) => "1 jittered ray per pixel".to_owned(),
             Sampling::Jittered(n) => format!("{n} jittered rays per pixel"),
         })
         .legend(move |(x, y)| {

@@ -18,28 +18,40 @@ pub fn cost(row: &Summary) -> f64 {
     row.rays as f64
 }
 
+/// Rays counts closer than this share of each other rank as equal: the
+/// rays of a jittered row differ from seed to seed by less than 0.1%.
+pub const RAYS_TOLERANCE: f64 = 0.01;
+
 /// The rows on the Pareto front, cheapest first: those that no other row
 /// beats on both cost and error. Errors closer than the reference's floor
 /// (its [`Floor::limit`]) cannot be told apart, so a row is beaten only by
 /// one that costs no more and whose error is no more than that much above
-/// its own, and is lower in cost or lower in error by more than that. Each
+/// its own, and is lower in cost (by more than [`RAYS_TOLERANCE`]) or lower
+/// in error by more than that. Each
 /// row on the front is the cheapest way the study found to its error; of
-/// rows that tie exactly, the first.
+/// rows that tie, the cheapest.
 pub fn pareto(rows: &[Summary], floor: Floor) -> Vec<&Summary> {
     let tolerance = floor.limit();
     let point = |r: &Summary| (cost(r), r.ranked_error(floor));
+    // A jittered row's rays move with its seeds by a few in ten thousand:
+    // costs within RAYS_TOLERANCE count as equal.
+    let (less, more) = (1.0 - RAYS_TOLERANCE, 1.0 + RAYS_TOLERANCE);
     let beats = |o: &Summary, m: &Summary| {
         let ((oc, oe), (mc, me)) = (point(o), point(m));
-        oc <= mc && oe <= me + tolerance && (oc < mc || oe < me - tolerance)
+        oc <= mc * more && oe <= me + tolerance && (oc < mc * less || oe < me - tolerance)
     };
     let mut front: Vec<&Summary> = rows
         .iter()
         .filter(|m| !rows.iter().any(|o| beats(o, m)))
         .collect();
     front.sort_by(|a, b| point(a).0.total_cmp(&point(b).0));
-    // Rows that tie exactly (the same rays and error: a threshold that
-    // never ends a path at depth 1) are one point: the first stands for all.
-    front.dedup_by(|b, a| point(a) == point(b));
+    // Rows that tie (rays within RAYS_TOLERANCE, errors within the floor's
+    // limit: a threshold that never ends a path at depth 1) are one point:
+    // the cheapest stands for all.
+    front.dedup_by(|b, a| {
+        let ((ac, ae), (bc, be)) = (point(a), point(b));
+        bc <= ac * more && (ae - be).abs() <= tolerance
+    });
     front
 }
 
