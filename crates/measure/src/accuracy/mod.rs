@@ -59,9 +59,11 @@ pub struct AccuracyArgs {
     /// Scene file (TOML); default: the showcase.
     pub scene: Option<PathBuf>,
 
-    /// A smaller grid and picture (128×96, up to 16 rays per pixel): done
-    /// in under a minute on two cores. Without it, the full study: 256×192,
-    /// up to 64 rays per pixel, under 15 minutes with no cached reference.
+    /// A smaller grid and picture (128×96, up to 16 rays per pixel, 8
+    /// seeds): done in under a minute on two cores once its reference is
+    /// cached (about one more to make it). Without it, the full study:
+    /// 256×192, up to 64 rays per pixel, 4 seeds, under 15 minutes on two
+    /// quiet cores with no cached reference.
     #[arg(long)]
     pub quick: bool,
 
