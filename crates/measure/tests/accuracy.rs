@@ -161,6 +161,19 @@ fn at_floor_is_not_claimed_when_the_standard_error_forbids_it() {
         se: 1e-6,
     };
     assert_eq!(verdict(&row), Verdict::Above, "1e-5 − 2e-6 > 4e-6");
+    // Just above the floor, 2 SE just past the limit (the full study's
+    // depth 16 at 4 seeds): the room left is the limit less the estimate,
+    // 2.5e-6, which 2 SE fit at K(K−1) ≥ 12 × (3/2.5)² = 17.3, K = 5.
+    row.bias2 = Estimate {
+        value: 1.5e-6,
+        se: 1.5e-6,
+    };
+    assert_eq!(verdict(&row), Verdict::Unresolved);
+    assert_eq!(floor.seeds_to_tell(row.bias2, 4), 5);
+    // At the limit already: no number of seeds makes it "at floor".
+    row.bias2.value = 4e-6;
+    assert_eq!(floor.seeds_to_tell(row.bias2, 4), usize::MAX);
+    assert!(!bias_cell(&row, floor).contains("seeds would"));
 }
 
 #[test]

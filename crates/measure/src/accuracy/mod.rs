@@ -62,8 +62,8 @@ pub struct AccuracyArgs {
     /// A smaller grid and picture (128×96, up to 16 rays per pixel, 8
     /// seeds): done in under a minute on two cores once its reference is
     /// cached (about one more to make it). Without it, the full study:
-    /// 256×192, up to 64 rays per pixel, 4 seeds, under 15 minutes on two
-    /// quiet cores with no cached reference.
+    /// 256×192, up to 64 rays per pixel, 6 seeds, well under an hour on
+    /// two cores with no cached reference.
     #[arg(long)]
     pub quick: bool,
 
@@ -77,7 +77,7 @@ pub struct AccuracyArgs {
     pub cache: Option<PathBuf>,
 
     /// Renders per setting, each with its own seed where it is jittered
-    /// (at least 4, for the standard errors). Default: 8 for --quick, 4
+    /// (at least 4, for the standard errors). Default: 8 for --quick, 6
     /// for the full study, so that the bias² of the rows with the most
     /// rays per pixel is told from the floor (the report says whether it
     /// was, and how many seeds each other row would need).
@@ -266,8 +266,8 @@ fn announce(plan: &Plan, settings: &[Setting], cache: &Path, seconds: f64) {
         "raybook accuracy, {full}: {}×{} pixels, {} settings ({} depths × {} thresholds × {} samplings, \
          and the effects) × {} seeds, on {} threads.\nReference: 2 renders × {} jittered rays per pixel \
          at depth 64, threshold 0, cached in {}.\nExpect about {} if the reference is not cached yet \
-         (from one untimed render of each setting with one ray per pixel, just now; the full study is \
-         sized for under 15 minutes on two cores).",
+         (from one untimed render of each setting with one ray per pixel, just now; the performance \
+         page gives the times measured on two cores).",
         plan.width,
         plan.height,
         settings.len(),

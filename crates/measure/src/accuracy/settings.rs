@@ -131,15 +131,16 @@ pub struct Plan {
 /// and its limit (3 × the floor). Measured: the page states the SEs each
 /// run got, and how many seeds each row that cannot tell would need.
 pub const QUICK_SEEDS: u32 = 8;
-pub const FULL_SEEDS: u32 = 4;
+pub const FULL_SEEDS: u32 = 6;
 
 /// The factor by which the reference has more rays per pixel than any row.
 pub const REFERENCE_FACTOR: u32 = 16;
 
 impl Plan {
-    /// The full study (`quick = false`) or the quick look. Sized to fit a
-    /// 2-core machine: under 15 minutes with an empty cache, and under one
-    /// minute for the quick look (the performance page says how).
+    /// The full study (`quick = false`) or the quick look, sized for a
+    /// 2-core machine: the quick look in about a minute with its reference
+    /// cached, the full study in well under an hour with none (the
+    /// performance page gives the times measured).
     pub fn new(quick: bool, scene_default: Termination) -> Plan {
         let (width, height) = if quick { (128, 96) } else { (256, 192) };
         let depths = if quick {

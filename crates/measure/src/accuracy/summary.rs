@@ -96,12 +96,17 @@ impl Floor {
     }
 
     /// The seeds a bias² measured with `seeds` seeds would need to read
-    /// "at floor" if the setting has no bias. Its estimate then expects the
-    /// floor itself, so it needs 2 SE ≤ limit − floor; where the noise
-    /// rules, its variance is 2σ⁴/(K(K−1)) over the values (the test of
-    /// [`super::estimate`] checks it), so its SE falls as 1/√(K(K−1)).
+    /// "at floor", if its estimate stayed where it is (or at the floor, its
+    /// least expected value, if below): it needs 2 SE ≤ limit − that. Where
+    /// the noise rules, the bias²'s variance is 2σ⁴/(K(K−1)) over the
+    /// values (the test of [`super::estimate`] checks it), so its SE falls
+    /// as 1/√(K(K−1)). `usize::MAX` where no number of seeds would (an
+    /// estimate at or above the limit).
     pub fn seeds_to_tell(self, bias2: Estimate, seeds: usize) -> usize {
-        let room = self.limit() - self.mse;
+        let room = self.limit() - bias2.value.max(self.mse);
+        if room <= 0.0 {
+            return usize::MAX;
+        }
         let k = seeds as f64;
         let needed = k * (k - 1.0) * (STANDARD_ERRORS * bias2.se / room).powi(2);
         // The smallest n with n(n − 1) ≥ needed.
