@@ -374,7 +374,9 @@ fn depths_plot(study: &Study, path: &Path) -> Drawn {
         };
         draw_curve(&mut chart, curve, look, format!("max depth {depth}"))?;
     }
-    finish(&mut chart, &root)
+    // Lower left: the curves start high at N = 1 and fall to the right,
+    // and the upper right holds the shallow depths' flat curves.
+    finish_at(&mut chart, &root, SeriesLabelPosition::LowerLeft)
 }
 
 /// RMSE against the rays a render traces, every row of the grid coloured
