@@ -170,7 +170,12 @@ fn at_floor_is_not_claimed_when_the_standard_error_forbids_it() {
     };
     assert_eq!(verdict(&row), Verdict::Unresolved);
     assert_eq!(floor.seeds_to_tell(row.bias2, 4), 5);
-    // At the limit already: no number of seeds makes it "at floor".
+    // Above the limit by 1e-6 with 2 SE = 3e-6: telling "above" needs
+    // K(K−1) ≥ 12 × 3² = 108, K = 11.
+    row.bias2.value = 5e-6;
+    assert_eq!(verdict(&row), Verdict::Unresolved);
+    assert_eq!(floor.seeds_to_tell(row.bias2, 4), 11);
+    // Exactly at the limit: no number of seeds tells which side.
     row.bias2.value = 4e-6;
     assert_eq!(floor.seeds_to_tell(row.bias2, 4), usize::MAX);
     assert!(!bias_cell(&row, floor).contains("seeds would"));

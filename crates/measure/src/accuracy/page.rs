@@ -56,7 +56,7 @@ fn method(page: &mut String, study: &Study) {
          reads \"at floor\" only where even {STANDARD_ERRORS} SE above it is below the limit and \
          {STANDARD_ERRORS} SE fit between the floor and the limit; \
          where the limit is within {STANDARD_ERRORS} SE the cell says \"can't tell\" and how many \
-         seeds would (if the setting had no bias; the SE falls as 1/√(K(K−1))). \
+         seeds would, if the estimate stayed where it is (the SE falls as 1/√(K(K−1))). \
          RMSE is the mean over the renders ± their standard deviation. MSE, RMSE and relative \
          MSE (ε = 0.01) use the unclamped linear values; PSNR and \"px off\" (a channel more \
          than one step away) the 8-bit values of the PNG.\n\n\

@@ -95,16 +95,17 @@ impl Floor {
         }
     }
 
-    /// The seeds a bias² measured with `seeds` seeds would need to read
-    /// "at floor", if its estimate stayed where it is (or at the floor, its
-    /// least expected value, if below): it needs 2 SE ≤ limit − that. Where
-    /// the noise rules, the bias²'s variance is 2σ⁴/(K(K−1)) over the
-    /// values (the test of [`super::estimate`] checks it), so its SE falls
-    /// as 1/√(K(K−1)). `usize::MAX` where no number of seeds would (an
-    /// estimate at or above the limit).
+    /// The seeds a bias² measured with `seeds` seeds would need to be
+    /// told from the limit, if its estimate stayed where it is (or at the
+    /// floor, its least expected value, if below it): below the limit it
+    /// needs 2 SE ≤ limit − that (which also fits 2 SE between floor and
+    /// limit), above it 2 SE < estimate − limit. Where the noise rules, the
+    /// bias²'s variance is 2σ⁴/(K(K−1)) over the values (the test of
+    /// [`super::estimate`] checks it), so its SE falls as 1/√(K(K−1)).
+    /// `usize::MAX` for an estimate exactly at the limit.
     pub fn seeds_to_tell(self, bias2: Estimate, seeds: usize) -> usize {
-        let room = self.limit() - bias2.value.max(self.mse);
-        if room <= 0.0 {
+        let room = (self.limit() - bias2.value.max(self.mse)).abs();
+        if room == 0.0 {
             return usize::MAX;
         }
         let k = seeds as f64;
