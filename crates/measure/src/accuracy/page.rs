@@ -51,11 +51,13 @@ fn method(page: &mut String, study: &Study) {
          MSE = bias² + variance: bias² is the mean product of two different seeds' errors \
          (independent noise multiplies out, the bias stays), the variance is half the mean \
          squared difference of two seeds' pictures. Measured against the reference, a bias² \
-         of zero reads as the floor, not 0. Each carries its standard error (± SE: the \
-         jackknife over the seeds; one centre ray has no seed, its bias² is exact). A value \
-         reads \"at floor\" only where even {STANDARD_ERRORS} SE above it is below the limit and \
-         {STANDARD_ERRORS} SE fit between the floor and the limit; \
-         where the limit is within {STANDARD_ERRORS} SE the cell says \"can't tell\" and how many \
+         of zero reads as the floor, not 0. Each carries its standard error (± SE over the \
+         seeds: an average over pairs of seeds, whose variance is Hoeffding's, estimated pixel \
+         by pixel; one centre ray has no seed, its bias² is exact). A value reads \"at floor\" \
+         only where even {STANDARD_ERRORS} SE above it is below the limit and {STANDARD_ERRORS} SE \
+         fit between the floor and the limit, \"above\" only where {STANDARD_ERRORS} SE below it \
+         is above the limit; \
+         between the two the cell says \"can't tell\" and how many \
          seeds would, if the estimate stayed where it is (the SE falls as 1/√(K(K−1))). \
          RMSE is the mean over the renders ± their standard deviation. MSE, RMSE and relative \
          MSE (ε = 0.01) use the unclamped linear values; PSNR and \"px off\" (a channel more \
