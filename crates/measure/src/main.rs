@@ -31,8 +31,9 @@ enum Command {
     /// Times the SPD scenes, against POV-Ray where it is installed (with
     /// --primary: primary rays per thread, against Embree).
     Bench(measure::bench::BenchArgs),
-    /// Measures what accuracy costs in time: depth, threshold, samples per
-    /// pixel and effects, as a table, a CSV and a plot.
+    /// Measures what accuracy costs and buys: depth, threshold, samples per
+    /// pixel and effects against one reference, each error with its
+    /// standard error, ranked by rays traced (tables, a CSV and plots).
     Accuracy(measure::accuracy::AccuracyArgs),
 }
 

@@ -8,8 +8,8 @@ use std::sync::OnceLock;
 
 use indicatif::ProgressBar;
 use measure::accuracy::{
-    Cost, FLOOR_FACTOR, Floor, Plan, Sampling, Setting, Spread, Study, Summary, Tracer,
-    best_within, by_efficiency, csv, page, pareto, reference, study,
+    Estimate, FLOOR_FACTOR, Floor, Plan, Sampling, Setting, Spread, Study, Summary, Tracer,
+    Verdict, best_within, bias_cell, by_efficiency, csv, page, pareto, reference, study,
 };
 use raybook::scene_files;
 use raybook::toolkit::Scene;
@@ -35,6 +35,7 @@ fn small_study() -> &'static Study {
         plan.samplings = [1, 4, 16].map(Sampling::Jittered).to_vec();
         plan.samplings.insert(0, Sampling::Centre);
         plan.reference_samples = 256;
+        plan.seeds = 4;
         study(&showcase, plan, &cache(), |_, _, _| ProgressBar::hidden()).0
     })
 }
@@ -54,33 +55,50 @@ fn every_row_is_above_the_references_own_error_or_marked_at_its_floor() {
     for r in every_row(study) {
         let name = r.setting.name();
         assert!(
-            r.mse > study.floor.mse || r.at_floor,
+            r.mse.value > study.floor.mse || r.at_floor,
             "{name}: {} ≤ the floor {}",
-            r.mse,
+            r.mse.value,
             study.floor.mse
         );
         assert_eq!(
             r.at_floor,
-            r.mse <= FLOOR_FACTOR * study.floor.mse,
+            r.mse.value + 2.0 * r.mse.se <= FLOOR_FACTOR * study.floor.mse,
             "{name}"
         );
     }
-    // At 16 jittered rays and depth 16, the mean of the seeds is as close
-    // to the reference as the reference lets anyone see: its bias² reads
-    // "at floor", not a number.
-    let best = study.curve(study.most_accurate());
-    let best = best.last().unwrap();
-    assert!(study.floor.holds(best.bias2), "{best:?}");
     let report = page(study);
     assert!(!report.contains('∞') && !report.contains("inf"), "{report}");
-    assert!(report.contains("at floor"), "{report}");
+}
+
+/// A study's every "at floor" is backed by its standard error: no bias²
+/// reads "at floor" unless 2 SE above it is within the limit, and every
+/// row whose SE is too large says it cannot tell.
+#[test]
+fn no_at_floor_contradicts_its_standard_error() {
+    let study = small_study();
+    let floor = study.floor;
+    for r in every_row(study) {
+        let cell = bias_cell(r, floor);
+        let upper = r.bias2.value + 2.0 * r.bias2.se;
+        let room = floor.limit() - floor.mse;
+        assert_eq!(
+            cell.starts_with("at floor"),
+            upper <= floor.limit() && 2.0 * r.bias2.se <= room,
+            "{}: {cell}",
+            r.setting.name()
+        );
+        if r.setting.sampling.is_random() {
+            assert!(r.bias2.se > 0.0, "{}: seeds differ", r.setting.name());
+            assert!(cell.contains('±'), "{}: {cell}", r.setting.name());
+        }
+    }
 }
 
 #[test]
 fn a_row_within_the_floor_reads_at_floor_and_shows_no_error_number() {
     let floor = Floor { mse: 1e-6 };
     let mut row = fixture(16, 16, 0.5, 3e-6);
-    row.at_floor = floor.holds(row.mse);
+    row.at_floor = floor.judge(row.mse) == Verdict::AtFloor;
     assert!(row.at_floor, "3e-6 is within 4 × 1e-6");
     let text = measure::accuracy::table([("near".to_owned(), &row)], floor);
     let cells: Vec<&str> = text
@@ -96,9 +114,71 @@ fn a_row_within_the_floor_reads_at_floor_and_shows_no_error_number() {
         cells[10].starts_with('≥'),
         "efficiency is a lower bound: {text}"
     );
-    row.mse = 5e-6;
-    row.at_floor = floor.holds(row.mse);
-    assert!(!row.at_floor, "5e-6 is not within 4 × 1e-6");
+    row.mse.value = 5e-6;
+    assert_ne!(floor.judge(row.mse), Verdict::AtFloor, "5e-6 > 4 × 1e-6");
+}
+
+/// The bias² of the same value reads "at floor" with a small standard
+/// error, "can't tell" with a large one, and "above" only when even 2 SE
+/// below it is above the limit.
+#[test]
+fn at_floor_is_not_claimed_when_the_standard_error_forbids_it() {
+    let floor = Floor { mse: 1e-6 };
+    let mut row = fixture(16, 16, 0.5, 1e-3);
+    let verdict = |row: &Summary| floor.judge(row.bias2);
+    row.bias2 = Estimate {
+        value: 1e-6,
+        se: 1e-6,
+    };
+    assert_eq!(verdict(&row), Verdict::AtFloor, "1e-6 + 2e-6 ≤ 4e-6");
+    assert!(bias_cell(&row, floor).starts_with("at floor"));
+    // The same value, but 2 SE reach past the limit: the seeds cannot tell.
+    row.bias2.se = 2e-6;
+    assert_eq!(verdict(&row), Verdict::Unresolved);
+    let cell = bias_cell(&row, floor);
+    assert!(
+        cell.contains("can't tell") && !cell.contains("at floor"),
+        "{cell}"
+    );
+    // A negative estimate, as noise can give, is no better evidence: its
+    // upper bound 0 is below the limit, but 2 SE are 70 times the room.
+    row.bias2 = Estimate {
+        value: -2e-4,
+        se: 1e-4,
+    };
+    assert_eq!(
+        verdict(&row),
+        Verdict::Unresolved,
+        "{}",
+        bias_cell(&row, floor)
+    );
+    // With 4 seeds, 2 SE = 2e-4 against room 3e-6: (2e-4/3e-6)² × 12 ≈
+    // 53000 = K(K−1), so K ≈ 231.
+    let seeds = floor.seeds_to_tell(row.bias2, 4);
+    assert!((229..=233).contains(&seeds), "{seeds}");
+    row.bias2 = Estimate {
+        value: 1e-5,
+        se: 1e-6,
+    };
+    assert_eq!(verdict(&row), Verdict::Above, "1e-5 − 2e-6 > 4e-6");
+    // Just above the floor, 2 SE just past the limit (the full study's
+    // depth 16 at 4 seeds): the room left is the limit less the estimate,
+    // 2.5e-6, which 2 SE fit at K(K−1) ≥ 12 × (3/2.5)² = 17.3, K = 5.
+    row.bias2 = Estimate {
+        value: 1.5e-6,
+        se: 1.5e-6,
+    };
+    assert_eq!(verdict(&row), Verdict::Unresolved);
+    assert_eq!(floor.seeds_to_tell(row.bias2, 4), 5);
+    // Above the limit by 1e-6 with 2 SE = 3e-6: telling "above" needs
+    // K(K−1) ≥ 12 × 3² = 108, K = 11.
+    row.bias2.value = 5e-6;
+    assert_eq!(verdict(&row), Verdict::Unresolved);
+    assert_eq!(floor.seeds_to_tell(row.bias2, 4), 11);
+    // Exactly at the limit: no number of seeds tells which side.
+    row.bias2.value = 4e-6;
+    assert_eq!(floor.seeds_to_tell(row.bias2, 4), usize::MAX);
+    assert!(!bias_cell(&row, floor).contains("seeds would"));
 }
 
 #[test]
@@ -115,13 +195,20 @@ fn the_mean_mse_splits_into_bias_squared_and_variance() {
     for r in every_row(small_study()) {
         let name = r.setting.name();
         assert!(
-            (r.bias2 + r.variance - r.mse).abs() <= 1e-9 * r.mse,
+            (r.bias2.value + r.variance.value - r.mse.value).abs() <= 1e-9 * r.mse.value,
             "{name}"
         );
         assert_eq!(r.renders, 4, "{name}: four seeds");
         match r.setting.sampling {
-            Sampling::Centre => assert_eq!(r.variance, 0.0, "{name}: no seed, no variance"),
-            Sampling::Jittered(_) => assert!(r.variance > 0.0, "{name}: seeds differ"),
+            Sampling::Centre => {
+                assert_eq!(
+                    r.variance,
+                    Estimate::exact(0.0),
+                    "{name}: no seed, no variance"
+                );
+                assert_eq!(r.bias2.se, 0.0, "{name}: known exactly");
+            }
+            Sampling::Jittered(_) => assert!(r.variance.value > 0.0, "{name}: seeds differ"),
         }
     }
 }
@@ -133,14 +220,14 @@ fn jittered_error_falls_with_samples_and_one_sample_is_mostly_variance() {
     assert_eq!(curve.len(), 3);
     for pair in curve.windows(2) {
         assert!(
-            pair[1].mse < pair[0].mse,
+            pair[1].mse.value < pair[0].mse.value,
             "{} then {}",
             pair[0].setting.name(),
             pair[1].setting.name()
         );
     }
     assert!(
-        curve[0].variance > 10.0 * curve[0].bias2.max(0.0),
+        curve[0].variance.value > 10.0 * curve[0].bias2.value.max(0.0),
         "{:?}",
         curve[0]
     );
@@ -175,22 +262,28 @@ fn error_falls_with_depth_in_the_mirror_corridor() {
     for pair in study.grid.windows(2) {
         let (a, b) = (&pair[0], &pair[1]);
         assert!(
-            b.mse <= a.mse + tolerance,
+            b.mse.value <= a.mse.value + tolerance,
             "{} has MSE {} but {} has {}",
             b.setting.name(),
-            b.mse,
+            b.mse.value,
             a.setting.name(),
-            a.mse
+            a.mse.value
         );
     }
     // One jittered ray's noise is the same at every depth; what depth 0
     // leaves out shows in the bias².
     let (shallow, deep) = (&study.grid[0], &study.grid[4]);
     assert!(
-        shallow.bias2 > 10.0 * deep.bias2.max(tolerance),
+        shallow.bias2.value > 10.0 * deep.bias2.value.max(tolerance),
         "the corridor needs its bounces: bias² {} at depth 0, {} at depth 8",
         shallow.bias2,
         deep.bias2
+    );
+    assert_eq!(
+        study.floor.judge(shallow.bias2),
+        Verdict::Above,
+        "{}",
+        shallow.bias2
     );
 }
 
@@ -212,8 +305,12 @@ fn the_csv_has_a_record_per_row_and_no_nan_or_infinity() {
         "rays",
         "seconds_median",
         "mse",
+        "mse_se",
         "bias2",
+        "bias2_se",
+        "bias2_verdict",
         "variance",
+        "variance_se",
         "relative_mse",
         "psnr_8bit_db",
         "at_floor",
@@ -233,7 +330,8 @@ fn the_csv_has_a_record_per_row_and_no_nan_or_infinity() {
     }
 }
 
-/// A row of a fixture table: its setting, seconds and MSE (no spread).
+/// A row of a fixture table: its setting, seconds (and a million rays a
+/// second) and MSE, all of it variance (no spread, no bias).
 fn fixture(depth: u32, samples: u32, seconds: f64, mse: f64) -> Summary {
     Summary {
         setting: Setting {
@@ -252,11 +350,20 @@ fn fixture(depth: u32, samples: u32, seconds: f64, mse: f64) -> Summary {
             max: seconds,
         },
         renders: 4,
-        mse,
+        mse: Estimate {
+            value: mse,
+            se: 0.0,
+        },
         rmse: mse.sqrt(),
         rmse_sd: 0.0,
-        bias2: 0.0,
-        variance: mse,
+        bias2: Estimate {
+            value: 0.0,
+            se: 0.0,
+        },
+        variance: Estimate {
+            value: mse,
+            se: 0.0,
+        },
         relative_mse: mse,
         psnr: measure::accuracy::Psnr::of(mse * 65025.0, 100),
         pixels_off: 0.0,
@@ -272,6 +379,15 @@ fn depths(rows: &[&Summary]) -> Vec<u32> {
         .collect()
 }
 
+/// The depth of the best row within `rays`.
+fn best_depth(rows: &[Summary], floor: Floor, rays: f64) -> u32 {
+    best_within(rows, floor, rays)
+        .unwrap()
+        .setting
+        .termination
+        .max_depth
+}
+
 #[test]
 fn the_rankings_follow_the_numbers_of_the_table() {
     let floor = Floor { mse: 1e-7 };
@@ -282,33 +398,44 @@ fn the_rankings_follow_the_numbers_of_the_table() {
         fixture(4, 4, 0.1, 5e-3),
     ];
     assert_eq!(
-        depths(&pareto(&rows, floor, Cost::Time)),
+        depths(&pareto(&rows, floor)),
         [1, 2, 3],
-        "4 is slower and worse than 2"
+        "4 traces more rays and is worse than 2"
     );
-    assert_eq!(
-        best_within(&rows, floor, 0.1)
-            .unwrap()
-            .setting
-            .termination
-            .max_depth,
-        2
-    );
+    assert_eq!(best_depth(&rows, floor, 1e5), 2);
     assert_eq!(depths(&by_efficiency(&rows, floor))[0], 1);
     // One number changed: row 4's MSE. It now beats row 3 and leads.
-    rows[3].mse = 5e-4;
-    assert_eq!(depths(&pareto(&rows, floor, Cost::Time)), [1, 2, 4]);
-    assert_eq!(
-        best_within(&rows, floor, 0.1)
-            .unwrap()
-            .setting
-            .termination
-            .max_depth,
-        4
-    );
+    rows[3].mse.value = 5e-4;
+    assert_eq!(depths(&pareto(&rows, floor)), [1, 2, 4]);
+    assert_eq!(best_depth(&rows, floor, 1e5), 4);
     assert_eq!(depths(&by_efficiency(&rows, floor))[0], 4);
-    // By rays (here a million per second), the same front.
-    assert_eq!(depths(&pareto(&rows, floor, Cost::Rays)), [1, 2, 4]);
+    // Time plays no part: row 4 slower than every other, the same ranks.
+    rows[3].time.median = 100.0;
+    assert_eq!(depths(&pareto(&rows, floor)), [1, 2, 4]);
+}
+
+#[test]
+fn efficiency_is_shown_only_where_the_bias_is_negligible() {
+    let floor = Floor { mse: 1e-7 };
+    let mut row = fixture(1, 16, 0.1, 1e-3);
+    assert!(row.efficiency(floor).is_some(), "all variance");
+    // A bias² of a fifth of the MSE: more rays buy nothing against it.
+    row.bias2 = Estimate {
+        value: 2e-4,
+        se: 1e-6,
+    };
+    assert!(row.efficiency(floor).is_none());
+    // Small, but its SE lets it be large: not shown either.
+    row.bias2 = Estimate {
+        value: 1e-5,
+        se: 1e-4,
+    };
+    assert!(row.efficiency(floor).is_none());
+    assert!(by_efficiency(&[row.clone()], floor).is_empty());
+    // One centre ray is all bias, whatever its numbers.
+    row.bias2 = Estimate::exact(0.0);
+    row.setting.sampling = Sampling::Centre;
+    assert!(row.efficiency(floor).is_none());
 }
 
 #[test]
@@ -316,23 +443,9 @@ fn errors_closer_than_the_floor_rank_as_equal_and_the_cheaper_wins() {
     let floor = Floor { mse: 1e-4 };
     let rows = vec![fixture(1, 4, 0.10, 2.0e-3), fixture(2, 4, 0.12, 1.9e-3)];
     // 1.9e-3 is within 4 × 1e-4 of 2.0e-3: no better, and dearer.
-    assert_eq!(depths(&pareto(&rows, floor, Cost::Time)), [1]);
-    assert_eq!(
-        best_within(&rows, floor, 1.0)
-            .unwrap()
-            .setting
-            .termination
-            .max_depth,
-        1
-    );
+    assert_eq!(depths(&pareto(&rows, floor)), [1]);
+    assert_eq!(best_depth(&rows, floor, 1e6), 1);
     let sharp = Floor { mse: 1e-6 };
-    assert_eq!(depths(&pareto(&rows, sharp, Cost::Time)), [1, 2]);
-    assert_eq!(
-        best_within(&rows, sharp, 1.0)
-            .unwrap()
-            .setting
-            .termination
-            .max_depth,
-        2
-    );
+    assert_eq!(depths(&pareto(&rows, sharp)), [1, 2]);
+    assert_eq!(best_depth(&rows, sharp, 1e6), 2);
 }

@@ -1,37 +1,36 @@
 //! The effects as bars, not a curve: they are categories, each a chapter's
 //! effect added to the ones before, at the scene's own criteria and one
-//! centre ray. Left: the RMSE against the reference; right: the median
-//! time of a render, with its min–max.
+//! centre ray. Left: the RMSE against the reference; right: the rays a
+//! render traces (exact; times at this size are the machine's noise).
 
 use std::path::Path;
 
 use plotters::prelude::*;
 
 use super::Study;
+use super::plot::{TEXT, TITLE};
 use super::summary::Summary;
 
 /// The plot's size in pixels.
-const SIZE: (u32, u32) = (900, 460);
+const SIZE: (u32, u32) = (760, 420);
 
 /// Draws the effects' bars into `path`.
 pub fn effects_plot(study: &Study, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
     let root = SVGBackend::new(path, SIZE).into_drawing_area();
     root.fill(&WHITE)?;
     let title = root.titled(
-        "each chapter's effect added (the scene's own depth and threshold, one centre ray)",
-        ("sans-serif", 20),
+        "each chapter's effect added (scene's depth and threshold, centre ray)",
+        ("sans-serif", TITLE),
     )?;
     let (left, right) = title.split_horizontally(SIZE.0 / 2);
     let steps: Vec<(&str, &Summary)> = study.effects.iter().map(|(n, s)| (*n, s)).collect();
     panel(&left, &steps, "RMSE against the reference", |s| {
         (s.rmse, s.rmse, s.rmse)
     })?;
-    panel(
-        &right,
-        &steps,
-        "seconds per render (median, min–max)",
-        |s| (s.time.min, s.time.median, s.time.max),
-    )?;
+    panel(&right, &steps, "rays traced per render", |s| {
+        let rays = s.rays as f64;
+        (rays, rays, rays)
+    })?;
     root.present()?;
     Ok(())
 }
@@ -47,9 +46,9 @@ fn panel(
     let top = steps.iter().map(|(_, s)| value(s).2).fold(0.0, f64::max) * 1.15;
     let labels: Vec<String> = steps.iter().map(|(n, _)| n.to_string()).collect();
     let mut chart = ChartBuilder::on(area)
-        .margin(15)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
+        .margin(12)
+        .x_label_area_size(36)
+        .y_label_area_size(84)
         .build_cartesian_2d(-0.5f64..steps.len() as f64 - 0.5, 0.0..top.max(1e-9))?;
     let label = |x: &f64| {
         let i = x.round();
@@ -61,6 +60,17 @@ fn panel(
     chart
         .configure_mesh()
         .disable_x_mesh()
+        .light_line_style(TRANSPARENT)
+        .label_style(("sans-serif", TEXT))
+        .axis_desc_style(("sans-serif", TEXT))
+        .y_label_formatter(&|v| {
+            // RMSEs in two decimals, ray counts in whole numbers.
+            if top < 10.0 {
+                format!("{v:.2}")
+            } else {
+                format!("{v:.0}")
+            }
+        })
         .x_labels(steps.len() * 2 + 1)
         .x_label_formatter(&label)
         .y_desc(name)

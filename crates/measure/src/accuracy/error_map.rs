@@ -1,7 +1,7 @@
 //! Error maps: where in the picture a setting's error is. Each pixel's
 //! RMSE over its three channels against the reference, on a log scale from
-//! 10⁻⁴ (black) to 1 (white), through magenta and orange; a strip at the
-//! bottom shows the scale, one decade per quarter.
+//! 10⁻⁴ (black) to 1 (white), through magenta and orange. The scale is a
+//! picture of its own, `error-scale.svg`, with a labelled tick per decade.
 
 use std::path::{Path, PathBuf};
 
@@ -12,9 +12,6 @@ use super::settings::{Sampling, Setting};
 
 /// The smallest error the map tells from none: black below it.
 pub const SMALLEST: f64 = 1e-4;
-
-/// Rows of the scale strip under the map.
-const STRIP: u32 = 12;
 
 /// A name for `setting`'s map file: depth, threshold, sampling.
 pub fn file_name(setting: &Setting) -> String {
@@ -53,23 +50,54 @@ fn colour(e: f64) -> [u8; 3] {
     [0, 1, 2].map(|k| (ca[k] + f * (cb[k] - ca[k])).round() as u8)
 }
 
-/// The map of `image` against `reference`, with the scale strip.
+/// The map of `image` against `reference`.
 pub fn map(image: &Image, reference: &Image) -> ::image::RgbImage {
     let (w, h) = (image.width, image.height);
-    let mut out = ::image::RgbImage::new(w, h + STRIP);
+    let mut out = ::image::RgbImage::new(w, h);
     for (i, (&x, &r)) in image.pixels.iter().zip(&reference.pixels).enumerate() {
         let d: Color = x - r;
         let e = (f64::from(d.dot(d)) / 3.0).sqrt();
         out.put_pixel(i as u32 % w, i as u32 / w, ::image::Rgb(colour(e)));
     }
-    for x in 0..w {
-        let t = (f64::from(x) + 0.5) / f64::from(w);
-        let e = SMALLEST.powf(1.0 - t);
-        for y in h + 2..h + STRIP {
-            out.put_pixel(x, y, ::image::Rgb(colour(e)));
-        }
-    }
     out
+}
+
+/// The colour bar of the maps, as SVG into `path`: the scale from
+/// [`SMALLEST`] to 1 with a tick and a label at each decade, and its name.
+pub fn scale_plot(path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    use plotters::coord::combinators::BindKeyPoints;
+    use plotters::prelude::*;
+    let root = SVGBackend::new(path, (560, 110)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .margin_left(30)
+        .margin_right(40)
+        .margin_top(10)
+        .x_label_area_size(60)
+        .build_cartesian_2d(
+            (SMALLEST..1.0)
+                .log_scale()
+                .with_key_points(vec![1e-4, 1e-3, 1e-2, 1e-1, 1.0]),
+            0.0..1.0,
+        )?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .disable_y_axis()
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .label_style(("sans-serif", super::plot::TEXT))
+        .axis_desc_style(("sans-serif", super::plot::TEXT))
+        .x_desc("each pixel's RMSE against the reference (black: below 1e-4)")
+        .draw()?;
+    let steps = 200;
+    let decades = -SMALLEST.log10();
+    chart.draw_series((0..steps).map(|i| {
+        let at = |i: i32| SMALLEST * 10f64.powf(decades * f64::from(i) / f64::from(steps));
+        let [r, g, b] = colour(at(i) * 1.0001);
+        Rectangle::new([(at(i), 0.0), (at(i + 1), 1.0)], RGBColor(r, g, b).filled())
+    }))?;
+    root.present()?;
+    Ok(())
 }
 
 /// Writes the map of each kept picture into `folder`, each atomically;

@@ -1,7 +1,6 @@
-//! Rendering the rows: each setting rendered once per seed, the settings
-//! taken in turn within each round (interleaved, so that a slow spell of
-//! the machine falls on every row alike rather than on a few), each render
-//! timed and compared with the one reference.
+//! Rendering the rows: each setting rendered once per seed, its seeds one
+//! after another (so that only one setting's pictures are held at a time),
+//! each render timed and compared with the one reference.
 
 use std::time::Instant;
 
@@ -9,6 +8,7 @@ use raybook::toolkit::scene::Effects;
 use raybook::toolkit::{Color, Image, Scene};
 use raybook::tracer::{Termination, render_complete, render_terminated};
 
+use super::estimate::{Estimate, Split, split};
 use super::metrics::{self, Errors};
 use super::settings::{Sampling, Setting, Tracer};
 
@@ -69,62 +69,95 @@ pub struct Row {
     pub seconds: Vec<f64>,
     /// The errors of each render.
     pub errors: Vec<Errors>,
-    /// The squared bias: how far the mean over the seeds is from the
-    /// reference, less what the seeds' noise adds to that distance.
-    pub bias2: f64,
-    /// The variance: how far each render is from the mean of the seeds.
-    pub variance: f64,
+    /// The mean MSE over the seeds, and its split into bias² and variance,
+    /// each with its standard error ([`super::estimate`]).
+    pub mse: Estimate,
+    pub bias2: Estimate,
+    pub variance: Estimate,
 }
 
-/// What accumulates over a row's renders: the sum of its pictures and of
-/// its MSEs, for the bias and variance split.
-struct Tally {
-    sum: Vec<Color>,
-    rays: u64,
-    seconds: Vec<f64>,
-    errors: Vec<Errors>,
-}
-
-/// Renders every one of `settings` `seeds` times (seeds 1, 2, …; a row
+/// Renders every one of `settings` once per seed of `seeds` (a row
 /// without randomness is rendered as often, for its time), compares each
 /// render with `reference`, and splits each row's error into bias² and
 /// variance. `keep(setting)` says which rows' first pictures to hand back
 /// (for the error maps); `on_row(setting)` is called per row of pixels
 /// rendered.
 ///
-/// Round k renders every setting with seed k, each round starting at a
-/// different setting, so that each setting's renders fall at different
-/// moments of the study. Call [`warm_up`] first: no render here is
-/// untimed.
+/// A setting's seeds are rendered one after another, since its split
+/// needs every pair of its pictures: holding every setting's pictures at
+/// once would take gigabytes in the full study. So a slow spell of the
+/// machine falls on a few settings' times: the report ranks by rays, and
+/// shows times with their spread. Call [`warm_up`] first: no render here
+/// is untimed.
 pub fn measure_rows(
     scene: &Scene,
     settings: &[Setting],
-    seeds: u32,
+    seeds: std::ops::Range<u64>,
     reference: &Image,
     keep: impl Fn(&Setting) -> bool,
     on_row: &(dyn Fn(&Setting) + Sync),
 ) -> (Vec<Row>, Vec<(Setting, Image)>) {
-    let mut tallies: Vec<Tally> = settings.iter().map(|_| Tally::new()).collect();
     let mut kept = Vec::new();
-    let n = settings.len();
-    for round in 0..seeds as usize {
-        let seed = round as u64 + 1;
-        let first = round * n / seeds as usize;
-        for i in (0..n).map(|k| (first + k) % n) {
-            let setting = &settings[i];
-            let rendered = render_timed(scene, setting, Some(seed), &|| on_row(setting));
-            if round == 0 && keep(setting) {
-                kept.push((*setting, rendered.image.clone()));
-            }
-            tallies[i].add(rendered, reference);
+    let mut rows = Vec::new();
+    for setting in settings {
+        let renders: Vec<Rendered> = seeds
+            .clone()
+            .map(|seed| render_timed(scene, setting, Some(seed), &|| on_row(setting)))
+            .collect();
+        rows.push(row(*setting, &renders, reference));
+        if keep(setting) {
+            let first = renders.into_iter().next().expect("at least one seed");
+            kept.push((*setting, first.image));
         }
     }
-    let rows = settings
-        .iter()
-        .zip(tallies)
-        .map(|(setting, tally)| tally.row(*setting, reference))
-        .collect();
     (rows, kept)
+}
+
+/// The row of `setting` from its `renders` (one per seed).
+fn row(setting: Setting, renders: &[Rendered], reference: &Image) -> Row {
+    let k = renders.len().max(1) as u64;
+    let differences: Vec<Vec<f32>> = renders
+        .iter()
+        .map(|r| difference(&r.image, reference))
+        .collect();
+    let Split {
+        mse,
+        bias2,
+        variance,
+    } = split(&differences);
+    let (mse, bias2, variance) = if setting.sampling.is_random() {
+        (mse, bias2, variance)
+    } else {
+        // Every seed renders the same picture: its error is known exactly
+        // (given the reference), and all of it is bias.
+        let mse = Estimate::exact(mse.value);
+        (mse, mse, Estimate::exact(0.0))
+    };
+    Row {
+        setting,
+        rays: renders.iter().map(|r| r.rays).sum::<u64>() / k,
+        seconds: renders.iter().map(|r| r.seconds).collect(),
+        errors: renders
+            .iter()
+            .map(|r| metrics::errors(&r.image, reference))
+            .collect(),
+        mse,
+        bias2,
+        variance,
+    }
+}
+
+/// `image` − `reference`, every channel of every pixel, as a flat list.
+fn difference(image: &Image, reference: &Image) -> Vec<f32> {
+    image
+        .pixels
+        .iter()
+        .zip(&reference.pixels)
+        .flat_map(|(&x, &r)| {
+            let d: Color = x - r;
+            [d.x, d.y, d.z]
+        })
+        .collect()
 }
 
 /// The primary rays `settings` trace in one render each at `width` ×
@@ -170,63 +203,4 @@ pub fn warm_up(scene: &Scene, settings: &[Setting]) -> Vec<PerRay> {
         });
     }
     costs
-}
-
-impl Tally {
-    fn new() -> Tally {
-        Tally {
-            sum: Vec::new(),
-            rays: 0,
-            seconds: Vec::new(),
-            errors: Vec::new(),
-        }
-    }
-
-    /// Counts one render in.
-    fn add(&mut self, rendered: Rendered, reference: &Image) {
-        self.errors
-            .push(metrics::errors(&rendered.image, reference));
-        self.seconds.push(rendered.seconds);
-        self.rays += rendered.rays;
-        if self.sum.is_empty() {
-            self.sum = rendered.image.pixels;
-        } else {
-            for (s, p) in self.sum.iter_mut().zip(rendered.image.pixels) {
-                *s += p;
-            }
-        }
-    }
-
-    /// The row, once every seed is in.
-    ///
-    /// With K renders X₁ … X_K, their mean X̄ and the reference R, the
-    /// mean MSE splits exactly as (1/K) Σₖ ‖Xₖ − R‖² = ‖X̄ − R‖² +
-    /// (1/K) Σₖ ‖Xₖ − X̄‖². The variance is estimated without bias by
-    /// V = Σₖ ‖Xₖ − X̄‖² / (K − 1), and E‖X̄ − R‖² = bias² + V/K, so
-    /// bias² = ‖X̄ − R‖² − V/K and mean MSE = bias² + V. A setting without
-    /// randomness has V = 0: all its error is bias.
-    fn row(self, setting: Setting, reference: &Image) -> Row {
-        let k = self.errors.len().max(1) as f64;
-        let mean_mse = self.errors.iter().map(|e| e.mse).sum::<f64>() / k;
-        let mean = Image {
-            width: reference.width,
-            height: reference.height,
-            pixels: self.sum.iter().map(|&s| s / k as f32).collect(),
-        };
-        let mse_of_mean = metrics::mse(&mean, reference);
-        let (bias2, variance) = if setting.sampling.is_random() && k > 1.0 {
-            let variance = (k * (mean_mse - mse_of_mean) / (k - 1.0)).max(0.0);
-            (mean_mse - variance, variance)
-        } else {
-            (mean_mse, 0.0)
-        };
-        Row {
-            setting,
-            rays: self.rays / k as u64,
-            seconds: self.seconds,
-            errors: self.errors,
-            bias2,
-            variance,
-        }
-    }
 }

@@ -6,14 +6,17 @@
 //! the effects added a chapter at a time (`settings.rs`). Every row is
 //! compared with one reference, far more accurate than any row and
 //! rendered twice so that its own error is known (`reference.rs`, cached
-//! on disk). Each row is rendered with several seeds, interleaved with the
-//! others and timed (`measure.rs`), its error measured on linear and 8-bit
-//! values (`metrics.rs`) and split into bias² and variance (`summary.rs`).
+//! on disk). Each row is rendered with several seeds and timed
+//! (`measure.rs`), its error measured on linear and 8-bit values
+//! (`metrics.rs`) and split into bias² and variance, each with its
+//! standard error (`estimate.rs`), which says what may be claimed about the
+//! reference's floor (`summary.rs`).
 //! The report ranks the settings from those numbers (`report.rs`,
 //! `page.rs`) and draws them (`plot.rs`, `bars.rs`, `error_map.rs`).
 
 mod bars;
 mod error_map;
+mod estimate;
 mod measure;
 mod metrics;
 mod page;
@@ -35,14 +38,19 @@ use raybook::toolkit::{Image, Scene};
 use raybook::tracer::Termination;
 use raybook::workbench::cli::with_threads;
 
+pub use estimate::{Estimate, Split, split};
 pub use measure::{PerRay, Row, measure_rows, primary_rays, render_timed, scene_for, warm_up};
 pub use metrics::{Errors, Psnr, errors};
 pub use page::{BUDGETS, page};
 pub use reference::{REFERENCE_SEEDS, Reference, reference};
-pub use report::{Cost, best_within, by_efficiency, csv, equal_time_table, pareto, slope, table};
+pub use report::{
+    best_within, bias_cell, by_efficiency, cost, csv, equal_rays_table, pareto, slope, table,
+};
 pub use settings::{Plan, REFERENCE_FACTOR, Sampling, Setting, Tracer, reference_setting};
 pub use study::Study;
-pub use summary::{FLOOR_FACTOR, Floor, Spread, Summary};
+pub use summary::{
+    FLOOR_FACTOR, Floor, NEGLIGIBLE_BIAS, STANDARD_ERRORS, Spread, Summary, Verdict,
+};
 
 /// `raybook accuracy`: renders a scene at many settings and shows, measured
 /// against one reference, what each costs and what it buys.
@@ -51,9 +59,11 @@ pub struct AccuracyArgs {
     /// Scene file (TOML); default: the showcase.
     pub scene: Option<PathBuf>,
 
-    /// A smaller grid and picture (128×96, up to 16 rays per pixel): done
-    /// in under a minute on two cores. Without it, the full study: 256×192,
-    /// up to 64 rays per pixel, under 15 minutes with no cached reference.
+    /// A smaller grid and picture (128×96, up to 16 rays per pixel, 8
+    /// seeds): done in under a minute on two cores once its reference is
+    /// cached (about one more to make it). Without it, the full study:
+    /// 256×192, up to 64 rays per pixel, 6 seeds, well under an hour on
+    /// two cores with no cached reference.
     #[arg(long)]
     pub quick: bool,
 
@@ -66,9 +76,19 @@ pub struct AccuracyArgs {
     #[arg(long)]
     pub cache: Option<PathBuf>,
 
-    /// Renders per setting, each with its own seed where it is jittered.
-    #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u32).range(4..=64))]
-    pub seeds: u32,
+    /// Renders per setting, each with its own seed where it is jittered
+    /// (at least 4, for the standard errors). Default: 8 for --quick, 6
+    /// for the full study, so that the bias² of the rows with the most
+    /// rays per pixel is told from the floor (the report says whether it
+    /// was, and how many seeds each other row would need).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(4..=64))]
+    pub seeds: Option<u32>,
+
+    /// The first seed: the rows use seeds N, N + 1, … (another N gives an
+    /// independent run, to check that its conclusions agree). Below the
+    /// reference's seeds, 1000001 and 1000002.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=999_000))]
+    pub first_seed: u64,
 
     /// The tracer to measure: the complete one, or chapter 7's own (no BVH,
     /// so slower; it runs in a handout once chapters 1 to 7 are solved).
@@ -135,7 +155,10 @@ pub fn main(args: &AccuracyArgs) -> ExitCode {
 /// error maps written.
 fn run_study(scene: &Scene, args: &AccuracyArgs) -> Study {
     let mut plan = Plan::new(args.quick, Termination::of(scene));
-    plan.seeds = args.seeds;
+    if let Some(seeds) = args.seeds {
+        plan.seeds = seeds;
+    }
+    plan.first_seed = args.first_seed;
     plan.tracer = args.tracer;
     if let (Some(width), Some(height)) = (args.width, args.height) {
         (plan.width, plan.height) = (width, height);
@@ -203,7 +226,7 @@ pub fn study(
     let (rows, kept) = measure_rows(
         &scene,
         &settings,
-        plan.seeds,
+        plan.first_seed..plan.first_seed + u64::from(plan.seeds),
         &reference.image,
         keep,
         &|s| bar.inc(micros(s)),
@@ -243,8 +266,8 @@ fn announce(plan: &Plan, settings: &[Setting], cache: &Path, seconds: f64) {
         "raybook accuracy, {full}: {}×{} pixels, {} settings ({} depths × {} thresholds × {} samplings, \
          and the effects) × {} seeds, on {} threads.\nReference: 2 renders × {} jittered rays per pixel \
          at depth 64, threshold 0, cached in {}.\nExpect about {} if the reference is not cached yet \
-         (from one untimed render of each setting with one ray per pixel, just now; the full study is \
-         sized for under 15 minutes on two cores).",
+         (from one untimed render of each setting with one ray per pixel, just now; the performance \
+         page gives the times measured on two cores).",
         plan.width,
         plan.height,
         settings.len(),

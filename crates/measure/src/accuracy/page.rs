@@ -4,21 +4,26 @@
 
 use std::fmt::Write;
 
-use super::Study;
-use super::report::{Cost, by_efficiency, equal_time_table, named, pareto, slope, table};
-use super::summary::{FLOOR_FACTOR, Summary};
+use crate::bench::table::markdown;
 
-/// The time budgets of the equal-time table, in seconds.
-pub const BUDGETS: [f64; 4] = [0.0625, 0.25, 1.0, 4.0];
+use super::Study;
+use super::report::{by_efficiency, equal_rays_table, named, pareto, slope, table};
+use super::settings::Sampling;
+use super::summary::{FLOOR_FACTOR, NEGLIGIBLE_BIAS, STANDARD_ERRORS, Spread, Summary, Verdict};
+
+/// The budgets of the equal-cost table, in rays (of every kind) per pixel.
+pub const BUDGETS: [f64; 4] = [2.0, 8.0, 32.0, 128.0];
 
 /// The whole report.
 pub fn page(study: &Study) -> String {
     let mut page = String::new();
     method(&mut page, study);
+    seeds(&mut page, study);
     knobs(&mut page, study);
     bias(&mut page, study);
     convergence(&mut page, study);
     choices(&mut page, study);
+    time(&mut page, study);
     page
 }
 
@@ -39,17 +44,31 @@ fn method(page: &mut String, study: &Study) {
          reference: depth {d}, threshold {t}, {s} jittered rays per pixel, rendered twice \
          with independent seeds and averaged ({rays} rays, {secs:.1} s when made; {cached}, \
          {path}). Its own error, estimated from its two renders as mean((R₁ − R₂)²)/4: \
-         RMSE {floor_rmse:.2e} (MSE {mse:.2e}). A row whose MSE is within {FLOOR_FACTOR}× \
-         of that (its RMSE within 2×) cannot be told from the reference and reads \"at floor\".\n\n\
-         Each setting is rendered {k} times, with seeds 1 to {k} where it is jittered. \
-         RMSE is the mean over those renders ± their standard deviation; MSE = bias² + \
-         variance, the variance from the spread between seeds (one centre ray has none). \
-         MSE, RMSE and relative MSE (ε = 0.01) use the unclamped linear values; PSNR and \
-         \"px off\" (a channel more than one step away) the 8-bit values of the PNG. Time \
-         is the wall time of one render with its BVH build: the median of the {k} renders, \
-         taken in turn with every other setting's (interleaved), after one untimed warm-up \
-         render per termination, with the min–max spread. Rays are exact. \
-         Efficiency is 1/(MSE × median seconds).\n",
+         RMSE {floor_rmse:.2e} (MSE {mse:.2e}, the floor). The limit is {FLOOR_FACTOR}× the \
+         floor's MSE, {limit:.2e} (an RMSE within 2× the reference's): below it the reference \
+         cannot tell a row's error from its own.\n\n\
+         Each setting is rendered {k} times, with seeds {first} to {last} where it is jittered. \
+         MSE = bias² + variance: bias² is the mean product of two different seeds' errors \
+         (independent noise multiplies out, the bias stays), the variance is half the mean \
+         squared difference of two seeds' pictures. Measured against the reference, a bias² \
+         of zero reads as the floor, not 0. Each carries its standard error (± SE over the \
+         seeds: an average over pairs of seeds, whose variance is Hoeffding's, estimated pixel \
+         by pixel; one centre ray has no seed, its bias² is exact). A value reads \"at floor\" \
+         only where even {STANDARD_ERRORS} SE above it is below the limit and {STANDARD_ERRORS} SE \
+         fit between the floor and the limit, \"above\" only where {STANDARD_ERRORS} SE below it \
+         is above the limit; \
+         between the two the cell says \"can't tell\" and how many \
+         seeds would, if the estimate stayed where it is (the SE falls as 1/√(K(K−1))). \
+         RMSE is the mean over the renders ± their standard deviation. MSE, RMSE and relative \
+         MSE (ε = 0.01) use the unclamped linear values; PSNR and \"px off\" (a channel more \
+         than one step away) the 8-bit values of the PNG.\n\n\
+         Rays are exact, and every ranking below is by rays. Time is the wall time of one \
+         render with its BVH build, the median of the {k} renders with its min–max; at this \
+         size, on a shared machine, it moves by several times between renders, so it is shown \
+         and never ranked by (what a ray costs is at the end, from the largest renders). \
+         Efficiency, 1/(MSE × rays), is shown only where bias² is negligible (even \
+         {STANDARD_ERRORS} SE above it below {negligible}% of the MSE, or at floor): for a biased \
+         row more rays buy nothing against its bias.\n",
         w = plan.width,
         h = plan.height,
         threads = study.threads,
@@ -60,8 +79,83 @@ fn method(page: &mut String, study: &Study) {
         secs = r.seconds,
         path = r.cache.display(),
         mse = study.floor.mse,
+        limit = study.floor.limit(),
         k = plan.seeds,
+        first = plan.first_seed,
+        last = plan.first_seed + u64::from(plan.seeds) - 1,
+        negligible = 100.0 * NEGLIGIBLE_BIAS,
     );
+}
+
+/// How many seeds the study used and what they resolve: for each sampling,
+/// how many rows' bias² reads at floor, above it, or cannot tell, its
+/// largest SE, and the seeds that would tell every row.
+fn seeds(page: &mut String, study: &Study) {
+    let floor = study.floor;
+    let room = floor.limit() - floor.mse;
+    let _ = writeln!(
+        page,
+        "### How many seeds\n\n\
+         {k} seeds a row. bias² reads \"at floor\" when 2 SE fit in the room between the floor \
+         and its limit, {room:.2e}, so SE ≤ {half:.2e} is needed. A termination's bias does not \
+         depend on the rays per pixel (jittered rays average the same paths), so it is judged \
+         where its SE is smallest, at the most rays per pixel; the seeds are chosen so that \
+         those rows tell. Rows with fewer rays can tell only with the seeds below.\n",
+        k = study.plan.seeds,
+        half = room / STANDARD_ERRORS,
+    );
+    let lines = study
+        .plan
+        .samplings
+        .iter()
+        .filter(|s| s.is_random())
+        .map(|&sampling| seeds_line(study, sampling));
+    let header = [
+        "sampling",
+        "bias² at floor",
+        "above the floor",
+        "can't tell",
+        "largest SE of bias²",
+        "seeds to tell every row",
+    ];
+    let _ = writeln!(page, "{}\n", markdown(header, lines, 1));
+}
+
+/// One line of the seeds table: the grid's rows of `sampling`.
+fn seeds_line(study: &Study, sampling: Sampling) -> Vec<String> {
+    let floor = study.floor;
+    let rows: Vec<&Summary> = study
+        .grid
+        .iter()
+        .filter(|r| r.setting.sampling == sampling)
+        .collect();
+    let count = |v: Verdict| {
+        rows.iter()
+            .filter(|r| floor.judge(r.bias2) == v)
+            .count()
+            .to_string()
+    };
+    let largest = rows.iter().map(|r| r.bias2.se).fold(0.0, f64::max);
+    let needed = rows
+        .iter()
+        .filter(|r| floor.judge(r.bias2) == Verdict::Unresolved)
+        .map(|r| floor.seeds_to_tell(r.bias2, r.renders))
+        .max()
+        .map_or(format!("{} (all tell)", study.plan.seeds), |n| {
+            if n < 10_000 {
+                n.to_string()
+            } else {
+                "over 10000".to_owned()
+            }
+        });
+    vec![
+        sampling.name(),
+        count(Verdict::AtFloor),
+        count(Verdict::Above),
+        count(Verdict::Unresolved),
+        format!("{largest:.1e}"),
+        needed,
+    ]
 }
 
 /// Every knob turned alone from the scene's settings, and the effects.
@@ -167,29 +261,29 @@ fn convergence(page: &mut String, study: &Study) {
     );
 }
 
-/// The Pareto fronts, the equal-time table and the most efficient rows.
+/// The Pareto front by rays, the equal-rays table and the most efficient
+/// rows.
 fn choices(page: &mut String, study: &Study) {
     let floor = study.floor;
-    for (cost, what) in [(Cost::Time, "median time"), (Cost::Rays, "rays traced")] {
-        let front = pareto(&study.grid, floor, cost);
-        let _ = writeln!(
-            page,
-            "### The Pareto front by {what}\n\n\
-             The settings of the grid ({} of them) that no other beats on both {what} and MSE, \
-             cheapest first (rows at the floor count as equally accurate).\n\n{}\n",
-            study.grid.len(),
-            table(front.into_iter().map(named), floor)
-        );
-    }
+    let front = pareto(&study.grid, floor);
     let _ = writeln!(
         page,
-        "### Equal time\n\nThe most accurate setting of the grid whose median time is within \
-         each budget, on this machine at {}×{} pixels ({} threads), beside the best with one \
-         centre ray.\n\n{}\n",
-        study.plan.width,
-        study.plan.height,
-        study.threads,
-        equal_time_table(&study.grid, floor, &BUDGETS)
+        "### The Pareto front by rays traced\n\n\
+         The settings of the grid ({} of them) that no other beats on both rays traced and MSE, \
+         cheapest first (MSEs closer than the floor's limit count as equal).\n\n{}\n",
+        study.grid.len(),
+        table(front.into_iter().map(named), floor)
+    );
+    let _ = writeln!(
+        page,
+        "### Equal rays\n\nThe most accurate setting of the grid that traces at most so many \
+         rays per pixel (of every kind), beside the best with one centre ray.\n\n{}\n",
+        equal_rays_table(
+            &study.grid,
+            floor,
+            &BUDGETS,
+            study.plan.width * study.plan.height
+        )
     );
     let top: Vec<&Summary> = by_efficiency(&study.grid, floor)
         .into_iter()
@@ -197,7 +291,51 @@ fn choices(page: &mut String, study: &Study) {
         .collect();
     let _ = writeln!(
         page,
-        "### The most efficient settings\n\nBy 1/(MSE × median seconds), highest first.\n\n{}\n",
+        "### The most efficient settings\n\nBy 1/(MSE × rays), highest first, of the rows whose \
+         bias² is negligible (the others have none).\n\n{}\n",
         table(top.into_iter().map(named), floor)
+    );
+}
+
+/// What a ray costs in time, from the grid's renders with the most rays
+/// per pixel (the longest, so the least moved by the machine's jitter):
+/// nanoseconds per ray, the median over those rows of their median, and
+/// the least and most of any render.
+fn time(page: &mut String, study: &Study) {
+    let Some(most) = study.plan.samplings.iter().map(|s| s.samples()).max() else {
+        return;
+    };
+    let per_ray = |seconds: f64, r: &Summary| 1e9 * seconds / r.rays.max(1) as f64;
+    let rows: Vec<&Summary> = study
+        .grid
+        .iter()
+        .filter(|r| r.setting.sampling.samples() == most && r.setting.sampling.is_random())
+        .collect();
+    if rows.is_empty() {
+        return;
+    }
+    let medians: Vec<f64> = rows.iter().map(|r| per_ray(r.time.median, r)).collect();
+    let spread = Spread::of(&medians);
+    let least = rows
+        .iter()
+        .map(|r| per_ray(r.time.min, r))
+        .fold(f64::MAX, f64::min);
+    let most_ns = rows
+        .iter()
+        .map(|r| per_ray(r.time.max, r))
+        .fold(0.0, f64::max);
+    let _ = writeln!(
+        page,
+        "### What a ray costs in time\n\n\
+         From the {n} rows with {most} jittered rays per pixel, {k} renders each, on {threads} \
+         threads: {median:.0} ns of wall time per ray (median of the rows' medians; rows \
+         {low:.0} to {high:.0}; single renders {least:.0} to {most_ns:.0}). Wall time, so it \
+         includes the BVH's build and whatever else ran on the machine.\n",
+        n = rows.len(),
+        k = study.plan.seeds,
+        threads = study.threads,
+        median = spread.median,
+        low = spread.min,
+        high = spread.max,
     );
 }

@@ -1,25 +1,43 @@
 //! The study drawn, as SVG files: RMSE against rays per pixel with the
 //! guide slopes N^-½ and N^-1, the same for several depths, RMSE against
-//! time and against rays with the Pareto front, and the effects as bars.
-//! Every error is drawn where it was measured; the reference's floor is a
-//! shaded band, under which no measured error can be trusted.
+//! rays with the Pareto front, and the effects as bars. Every error is
+//! drawn where it was measured; the reference's floor is a shaded band,
+//! under which no measured error can be trusted.
+//!
+//! Drawn for the book's column (about 750 pixels wide): each plot is
+//! [`SIZE`] wide, so that it is shown near its own size, and no text is
+//! smaller than [`TEXT`] pixels. The log axes have no minor grid lines
+//! (between 1 and 16 they crowd into a grey band that reads as the floor's);
+//! curves that coincide are set apart by a small shift along N and a marker
+//! of their own.
 
 use std::error::Error;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
+use plotters::coord::combinators::{BindKeyPoints, WithKeyPoints};
+use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 
 use super::Study;
-use super::report::{Cost, pareto};
+use super::report::{cost, pareto};
 use super::settings::Sampling;
 use super::summary::Summary;
 
-/// Each plot's size in pixels.
-const SIZE: (u32, u32) = (820, 560);
+/// Each plot's size in pixels: about the book's column.
+const SIZE: (u32, u32) = (760, 540);
 
-/// A chart with both axes on log scales.
-type LogChart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+/// The smallest text, in pixels: at the book's width, at least 12.
+pub(super) const TEXT: u32 = 15;
+
+/// The title's text, in pixels.
+pub(super) const TITLE: u32 = 19;
+
+/// A chart with both axes on log scales, the x axis with ticks and grid
+/// lines only at chosen values (a log axis's own, at 1, 2, … 9 of every
+/// decade, crowd and overlap their labels).
+type LogChart<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian2d<WithKeyPoints<LogCoord<f64>>, LogCoord<f64>>>;
 
 /// The colours of successive curves.
 const COLOURS: [RGBColor; 8] = [
@@ -43,9 +61,9 @@ pub fn plot_all(study: &Study, folder: &Path) -> Result<Vec<PathBuf>, String> {
     let plots: [Plot; 5] = [
         ("accuracy-samples.svg", &samples_plot),
         ("accuracy-depths.svg", &depths_plot),
-        ("accuracy-time.svg", &|s, p| cost_plot(s, Cost::Time, p)),
-        ("accuracy-rays.svg", &|s, p| cost_plot(s, Cost::Rays, p)),
+        ("accuracy-rays.svg", &rays_plot),
         ("accuracy-effects.svg", &super::bars::effects_plot),
+        ("error-scale.svg", &|_, p| super::error_map::scale_plot(p)),
     ];
     std::fs::create_dir_all(folder).map_err(|e| e.to_string())?;
     let mut written = Vec::new();
@@ -59,28 +77,59 @@ pub fn plot_all(study: &Study, folder: &Path) -> Result<Vec<PathBuf>, String> {
     Ok(written)
 }
 
-/// A log-log chart on `path` with its title, axis names and ranges.
+/// A log-log chart on `path` with its title, axis names and ranges, the x
+/// axis ticked at `x_ticks`.
 fn log_chart<'a, 'b>(
     root: &'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
     title: &str,
-    (x_name, x): (&str, Range<f64>),
+    (x_name, x, x_ticks): (&str, Range<f64>, Vec<f64>),
     (y_name, y): (&str, Range<f64>),
 ) -> Result<LogChart<'a, 'b>, Box<dyn Error>> {
     root.fill(&WHITE)?;
     let mut chart = ChartBuilder::on(root)
-        .caption(title, ("sans-serif", 22))
-        .margin(20)
-        .x_label_area_size(50)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x.log_scale(), y.log_scale())?;
+        .caption(title, ("sans-serif", TITLE))
+        .margin(16)
+        .x_label_area_size(56)
+        .y_label_area_size(84)
+        .build_cartesian_2d(x.log_scale().with_key_points(x_ticks), y.log_scale())?;
     chart
         .configure_mesh()
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(RGBColor(220, 220, 220))
+        .label_style(("sans-serif", TEXT))
+        .axis_desc_style(("sans-serif", TEXT))
         .x_desc(x_name)
         .y_desc(y_name)
-        .x_label_formatter(&|v| format!("{v}"))
+        .x_label_formatter(&|v| {
+            if *v < 1000.0 {
+                format!("{v}")
+            } else {
+                format!("{v:.0e}")
+            }
+        })
         .y_label_formatter(&|v| format!("{v:.0e}"))
         .draw()?;
     Ok(chart)
+}
+
+/// The ticks of a rays-per-pixel axis: the grid's numbers of rays.
+fn n_ticks(study: &Study) -> Vec<f64> {
+    study
+        .plan
+        .samplings
+        .iter()
+        .map(|s| f64::from(s.samples()))
+        .collect()
+}
+
+/// Ticks at 1, 2 and 5 times the powers of ten from `low` to `high`.
+fn one_two_five(low: f64, high: f64) -> Vec<f64> {
+    let first = low.log10().floor() as i32;
+    let last = high.log10().ceil() as i32;
+    (first..=last)
+        .flat_map(|e| [1.0, 2.0, 5.0].map(|m| m * 10f64.powi(e)))
+        .filter(|v| (low..=high).contains(v))
+        .collect()
 }
 
 /// The RMSE axis: from below the floor band to above the largest error
@@ -108,7 +157,7 @@ fn draw_floor(chart: &mut LogChart, study: &Study) -> Drawn {
     chart
         .draw_series([band])?
         .label(format!(
-            "reference's floor (RMSE {:.1e}); within 2× of it: at the floor",
+            "at the reference's floor (RMSE ≤ 2 × {:.1e})",
             study.floor.mse.sqrt()
         ))
         .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], BLACK.mix(0.1).filled()));
@@ -120,19 +169,84 @@ fn draw_floor(chart: &mut LogChart, study: &Study) -> Drawn {
     Ok(())
 }
 
+/// How a curve looks: its colour, its marker and the factor by which its
+/// points are shifted along N (1 for none), so that curves on the same
+/// values stay apart.
+#[derive(Clone, Copy)]
+struct Look {
+    colour: RGBColor,
+    marker: Marker,
+    shift: f64,
+}
+
+/// The markers of successive curves.
+#[derive(Clone, Copy)]
+enum Marker {
+    Circle,
+    Triangle,
+    Square,
+    Diamond,
+}
+
+const MARKERS: [Marker; 4] = [
+    Marker::Circle,
+    Marker::Triangle,
+    Marker::Square,
+    Marker::Diamond,
+];
+
+impl Marker {
+    /// The marker's outline in pixels around its point, moved by `dx`.
+    fn outline(self, dx: i32) -> Vec<(i32, i32)> {
+        let points = match self {
+            Marker::Circle => (0..12)
+                .map(|i| {
+                    let a = std::f64::consts::TAU * f64::from(i) / 12.0;
+                    (
+                        (5.5 * a.cos()).round() as i32,
+                        (5.5 * a.sin()).round() as i32,
+                    )
+                })
+                .collect(),
+            Marker::Triangle => vec![(0, -7), (6, 4), (-6, 4)],
+            Marker::Square => vec![(-5, -5), (5, -5), (5, 5), (-5, 5)],
+            Marker::Diamond => vec![(0, -7), (7, 0), (0, 7), (-7, 0)],
+        };
+        points.into_iter().map(|(x, y)| (x + dx, y)).collect()
+    }
+}
+
 /// A curve of RMSE against rays per pixel: a line through the means, a
-/// dot and a bar of ± one standard deviation over the seeds at each.
-fn draw_curve(chart: &mut LogChart, rows: &[&Summary], colour: RGBColor, label: String) -> Drawn {
+/// marker and a bar of ± one standard deviation over the seeds at each.
+fn draw_curve<'a, 'b: 'a>(
+    chart: &mut LogChart<'a, 'b>,
+    rows: &[&Summary],
+    look: Look,
+    label: String,
+) -> Drawn {
     let y_floor = chart.y_range().start;
+    let Look {
+        colour,
+        marker,
+        shift,
+    } = look;
     let points: Vec<(f64, f64)> = rows
         .iter()
-        .map(|r| (f64::from(r.setting.sampling.samples()), r.rmse))
+        .map(|r| (shift * f64::from(r.setting.sampling.samples()), r.rmse))
         .collect();
     chart
         .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))?
         .label(label)
-        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2)));
-    chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, colour.filled())))?;
+        .legend(move |(x, y)| {
+            EmptyElement::at((x, y))
+                + PathElement::new(vec![(0, 0), (24, 0)], colour.stroke_width(2))
+                + Polygon::new(marker.outline(12), colour.filled())
+        });
+    chart.draw_series(
+        points
+            .iter()
+            .map(|&p| EmptyElement::at(p) + Polygon::new(marker.outline(0), colour.filled())),
+    )?;
     chart.draw_series(rows.iter().zip(&points).map(|(r, &(n, e))| {
         let low = (e - r.rmse_sd).max(y_floor);
         ErrorBar::new_vertical(n, low, e, e + r.rmse_sd, colour.stroke_width(1), 8)
@@ -160,36 +274,51 @@ fn samples_plot(study: &Study, path: &Path) -> Drawn {
     let mut chart = log_chart(
         &root,
         &title,
-        ("rays per pixel N", 0.7..largest * 1.5),
+        ("rays per pixel N", 0.7..largest * 1.5, n_ticks(study)),
         ("RMSE against the reference (linear RGB)", y),
     )?;
     draw_floor(&mut chart, study)?;
     if let Some(first) = curve.first() {
-        for (power, name, colour) in [
-            (0.5, "guide: N^-½", BLACK),
-            (1.0, "guide: N^-1", RGBColor(120, 120, 120)),
+        // Each guide's dashes, drawn the same in the legend.
+        for (power, name, (dash, gap)) in [
+            (0.5, "guide: N^-½ (independent samples)", (10, 5)),
+            (1.0, "guide: N^-1", (3, 4)),
         ] {
             let guide = (0..=40).map(|i| {
                 let n = largest.powf(f64::from(i) / 40.0);
                 (n, first.rmse * n.powf(-power))
             });
+            let style = BLACK.stroke_width(2);
             chart
-                .draw_series(DashedLineSeries::new(guide, 6, 4, colour.stroke_width(1)))?
+                .draw_series(DashedLineSeries::new(guide, dash, gap, style))?
                 .label(name)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+                .legend(move |(x, y)| {
+                    DashedPathElement::new([(x, y), (x + 24, y)], dash, gap, style)
+                });
         }
     }
+    let look = Look {
+        colour: COLOURS[0],
+        marker: Marker::Circle,
+        shift: 1.0,
+    };
     draw_curve(
         &mut chart,
         &curve,
-        COLOURS[0],
+        look,
         "jittered: mean ± sd over seeds".to_owned(),
     )?;
     if let Some(c) = centre {
+        // Beside N = 1, so that it does not cover the jittered ray's dot.
+        let colour = COLOURS[3];
         chart
-            .draw_series([TriangleMarker::new((1.0, c.rmse), 8, COLOURS[3].filled())])?
-            .label("one ray through the centre")
-            .legend(|(x, y)| TriangleMarker::new((x + 10, y), 6, COLOURS[3].filled()));
+            .draw_series([EmptyElement::at((1.12, c.rmse))
+                + Polygon::new(Marker::Triangle.outline(0), colour.filled())])?
+            .label("one ray through the centre (at N = 1)")
+            .legend(move |(x, y)| {
+                EmptyElement::at((x, y))
+                    + Polygon::new(Marker::Triangle.outline(12), colour.filled())
+            });
     }
     finish(&mut chart, &root)
 }
@@ -225,87 +354,106 @@ fn depths_plot(study: &Study, path: &Path) -> Drawn {
     let mut chart = log_chart(
         &root,
         &title,
-        ("rays per pixel N (jittered)", 0.7..largest * 1.5),
+        (
+            "jittered rays per pixel N (each depth shifted a little, to stay apart)",
+            0.7..largest * 1.5,
+            n_ticks(study),
+        ),
         ("RMSE against the reference (linear RGB)", y),
     )?;
     draw_floor(&mut chart, study)?;
-    for ((depth, curve), colour) in curves.iter().zip(COLOURS.iter().cycle()) {
-        draw_curve(&mut chart, curve, *colour, format!("max depth {depth}"))?;
+    // Depths whose curves coincide (their bias at the floor) would hide
+    // one another: each is shifted along N by a few percent and has its
+    // own marker.
+    let middle = (curves.len() as f64 - 1.0) / 2.0;
+    for (i, (depth, curve)) in curves.iter().enumerate() {
+        let look = Look {
+            colour: COLOURS[i % COLOURS.len()],
+            marker: MARKERS[i % MARKERS.len()],
+            shift: 1.07f64.powf(i as f64 - middle),
+        };
+        draw_curve(&mut chart, curve, look, format!("max depth {depth}"))?;
     }
-    finish(&mut chart, &root)
+    // Lower left: the curves start high at N = 1 and fall to the right,
+    // and the upper right holds the shallow depths' flat curves.
+    finish_at(&mut chart, &root, SeriesLabelPosition::LowerLeft)
 }
 
-/// RMSE against the cost of a render (median time with its min–max, or
-/// rays), every row of the grid coloured by its sampling, the Pareto
-/// front joined.
-fn cost_plot(study: &Study, cost: Cost, path: &Path) -> Drawn {
+/// RMSE against the rays a render traces, every row of the grid coloured
+/// and marked by its sampling, the Pareto front joined.
+fn rays_plot(study: &Study, path: &Path) -> Drawn {
     let rows = &study.grid;
-    let (low, high) = rows
-        .iter()
-        .fold((f64::MAX, 0.0f64), |(lo, hi), r| match cost {
-            Cost::Time => (lo.min(r.time.min), hi.max(r.time.max)),
-            Cost::Rays => (lo.min(r.rays as f64), hi.max(r.rays as f64)),
-        });
+    let (low, high) = rows.iter().fold((f64::MAX, 0.0f64), |(lo, hi), r| {
+        (lo.min(cost(r)), hi.max(cost(r)))
+    });
     let y = rmse_range(rows, study.floor.mse.sqrt());
-    let x_name = match cost {
-        Cost::Time => format!(
-            "seconds per render: median, bar from min to max ({} threads)",
-            study.threads
-        ),
-        Cost::Rays => "rays traced per render (exact)".to_owned(),
-    };
     let root = SVGBackend::new(path, SIZE).into_drawing_area();
-    let title = format!(
-        "RMSE against {}, every setting of the grid",
-        if cost == Cost::Time { "time" } else { "rays" }
-    );
     let mut chart = log_chart(
         &root,
-        &title,
-        (&x_name, low * 0.7..high * 1.5),
+        "RMSE against rays, every setting of the grid",
+        (
+            "rays traced per render (exact)",
+            low * 0.7..high * 1.5,
+            one_two_five(low * 0.7, high * 1.5),
+        ),
         ("RMSE against the reference (linear RGB)", y),
     )?;
     draw_floor(&mut chart, study)?;
-    for (sampling, colour) in study.plan.samplings.iter().zip(COLOURS.iter().cycle()) {
+    for (i, sampling) in study.plan.samplings.iter().enumerate() {
         let group: Vec<&Summary> = rows
             .iter()
             .filter(|r| r.setting.sampling == *sampling)
             .collect();
-        draw_points(&mut chart, &group, cost, *colour, *sampling)?;
+        let look = Look {
+            colour: COLOURS[i % COLOURS.len()],
+            marker: MARKERS[i % MARKERS.len()],
+            shift: 1.0,
+        };
+        draw_points(&mut chart, &group, look, *sampling)?;
     }
-    let front: Vec<(f64, f64)> = pareto(rows, study.floor, cost)
+    let front: Vec<(f64, f64)> = pareto(rows, study.floor)
         .into_iter()
-        .map(|r| (cost.of(r), r.rmse))
+        .map(|r| (cost(r), r.rmse))
         .collect();
     chart
         .draw_series(LineSeries::new(front.clone(), BLACK.stroke_width(1)))?
         .label("Pareto front: cheapest for its error")
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK));
+        .legend(|(x, y)| {
+            EmptyElement::at((x, y))
+                + PathElement::new(vec![(0, 0), (24, 0)], BLACK)
+                + Circle::new((12, 0), 8, BLACK.stroke_width(1))
+        });
     chart.draw_series(
         front
             .into_iter()
-            .map(|p| Circle::new(p, 7, BLACK.stroke_width(1))),
+            .map(|p| Circle::new(p, 9, BLACK.stroke_width(1))),
     )?;
-    finish(&mut chart, &root)
+    // Lower left: few rays never give errors that small.
+    finish_at(&mut chart, &root, SeriesLabelPosition::LowerLeft)
 }
 
-/// The rows of one sampling as dots with their spread bars.
-fn draw_points(
-    chart: &mut LogChart,
+/// The rows of one sampling as markers with their spread bars.
+fn draw_points<'a, 'b: 'a>(
+    chart: &mut LogChart<'a, 'b>,
     rows: &[&Summary],
-    cost: Cost,
-    colour: RGBColor,
+    look: Look,
     sampling: Sampling,
 ) -> Drawn {
     let y_floor = chart.y_range().start;
-    let point = |r: &Summary| (cost.of(r), r.rmse);
+    let Look { colour, marker, .. } = look;
+    let point = |r: &Summary| (cost(r), r.rmse);
     chart
-        .draw_series(
-            rows.iter()
-                .map(|r| Circle::new(point(r), 3, colour.filled())),
-        )?
-        .label(format!("{} per pixel", sampling.name()))
-        .legend(move |(x, y)| Circle::new((x + 10, y), 4, colour.filled()));
+        .draw_series(rows.iter().map(|r| {
+            EmptyElement::at(point(r)) + Polygon::new(marker.outline(0), colour.filled())
+        }))?
+        .label(match sampling {
+            Sampling::Centre => "one ray through each pixel's centre".to_owned(),
+            Sampling::Jittered(1) => "1 jittered ray per pixel".to_owned(),
+            Sampling::Jittered(n) => format!("{n} jittered rays per pixel"),
+        })
+        .legend(move |(x, y)| {
+            EmptyElement::at((x, y)) + Polygon::new(marker.outline(12), colour.filled())
+        });
     chart.draw_series(rows.iter().map(|r| {
         let (x, e) = point(r);
         ErrorBar::new_vertical(
@@ -317,24 +465,30 @@ fn draw_points(
             4,
         )
     }))?;
-    if cost == Cost::Time {
-        chart.draw_series(rows.iter().map(|r| {
-            let t = r.time;
-            ErrorBar::new_horizontal(r.rmse, t.min, t.median, t.max, colour.mix(0.6), 4)
-        }))?;
-    }
     Ok(())
 }
 
-/// The legend, and the file written.
+/// The legend, in the upper right (where the errors of many rays per
+/// pixel never reach), and the file written.
 fn finish<'a, 'b: 'a>(
     chart: &mut LogChart<'a, 'b>,
     root: &DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
 ) -> Drawn {
+    finish_at(chart, root, SeriesLabelPosition::UpperRight)
+}
+
+/// The legend at `position`, and the file written.
+fn finish_at<'a, 'b: 'a>(
+    chart: &mut LogChart<'a, 'b>,
+    root: &DrawingArea<SVGBackend<'b>, plotters::coord::Shift>,
+    position: SeriesLabelPosition,
+) -> Drawn {
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
+        .position(position)
+        .label_font(("sans-serif", TEXT))
+        .legend_area_size(36)
+        .background_style(WHITE.mix(0.9))
         .border_style(BLACK)
         .draw()?;
     root.present()?;

@@ -1,74 +1,84 @@
 //! The rows as the terminal and the performance page show them (Markdown
 //! tables), as a file keeps them (CSV), and the choices they support: the
-//! Pareto front, the best row within a time budget, the most efficient
+//! Pareto front, the best row within a budget of rays, the most efficient
 //! rows, and the rate at which jittered samples converge. Every ranking is
 //! computed from the rows' own numbers (the tests change one and watch the
 //! ranking follow).
 
 use serde::Serialize;
 
-use super::summary::{Floor, Summary};
+use super::summary::{Floor, Summary, Verdict};
 use crate::bench::table::markdown;
 
-/// The cost a Pareto front is drawn against.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Cost {
-    /// The median wall time of one render: what a reader waits.
-    Time,
-    /// The rays traced by one render: exact, the same on any machine.
-    Rays,
+/// The cost every ranking uses: the rays of every kind one render traces.
+/// Exact, and the same on any machine; a render's time at the study's
+/// sizes moves by several times from one render to the next on a shared
+/// machine, so the report shows it and ranks by rays.
+pub fn cost(row: &Summary) -> f64 {
+    row.rays as f64
 }
 
-impl Cost {
-    /// The cost of `row`.
-    pub fn of(self, row: &Summary) -> f64 {
-        match self {
-            Cost::Time => row.time.median,
-            Cost::Rays => row.rays as f64,
-        }
-    }
-}
+/// Rays counts closer than this share of each other rank as equal: the
+/// rays of a jittered row differ from seed to seed by less than 0.1%.
+pub const RAYS_TOLERANCE: f64 = 0.01;
 
 /// The rows on the Pareto front, cheapest first: those that no other row
 /// beats on both cost and error. Errors closer than the reference's floor
 /// (its [`Floor::limit`]) cannot be told apart, so a row is beaten only by
 /// one that costs no more and whose error is no more than that much above
-/// its own, and is lower in cost or lower in error by more than that. Each
-/// row on the front is the cheapest way the study found to its error.
-pub fn pareto(rows: &[Summary], floor: Floor, cost: Cost) -> Vec<&Summary> {
+/// its own, and is lower in cost (by more than [`RAYS_TOLERANCE`]) or lower
+/// in error by more than that. Each
+/// row on the front is the cheapest way the study found to its error; of
+/// rows that tie, the cheapest.
+pub fn pareto(rows: &[Summary], floor: Floor) -> Vec<&Summary> {
     let tolerance = floor.limit();
-    let point = |r: &Summary| (cost.of(r), r.ranked_error(floor));
+    let point = |r: &Summary| (cost(r), r.ranked_error(floor));
+    // A jittered row's rays move with its seeds by a few in ten thousand:
+    // costs within RAYS_TOLERANCE count as equal.
+    let (less, more) = (1.0 - RAYS_TOLERANCE, 1.0 + RAYS_TOLERANCE);
     let beats = |o: &Summary, m: &Summary| {
         let ((oc, oe), (mc, me)) = (point(o), point(m));
-        oc <= mc && oe <= me + tolerance && (oc < mc || oe < me - tolerance)
+        oc <= mc * more && oe <= me + tolerance && (oc < mc * less || oe < me - tolerance)
     };
     let mut front: Vec<&Summary> = rows
         .iter()
         .filter(|m| !rows.iter().any(|o| beats(o, m)))
         .collect();
     front.sort_by(|a, b| point(a).0.total_cmp(&point(b).0));
+    // Rows that tie (rays within RAYS_TOLERANCE, errors within the floor's
+    // limit: a threshold that never ends a path at depth 1) are one point:
+    // the cheapest stands for all.
+    front.dedup_by(|b, a| {
+        let ((ac, ae), (bc, be)) = (point(a), point(b));
+        bc <= ac * more && (ae - be).abs() <= tolerance
+    });
     front
 }
 
-/// The most accurate row whose median time is within `seconds`: of the
-/// rows within [`Floor::limit`] of the lowest error there, the fastest.
-/// `None` if no row is that fast.
-pub fn best_within(rows: &[Summary], floor: Floor, seconds: f64) -> Option<&Summary> {
-    let fast: Vec<&Summary> = rows.iter().filter(|r| r.time.median <= seconds).collect();
-    let lowest = fast
+/// The most accurate row that traces at most `rays`: of the rows within
+/// [`Floor::limit`] of the lowest error there, the cheapest. `None` if no
+/// row is that cheap.
+pub fn best_within(rows: &[Summary], floor: Floor, rays: f64) -> Option<&Summary> {
+    let cheap: Vec<&Summary> = rows.iter().filter(|r| cost(r) <= rays).collect();
+    let lowest = cheap
         .iter()
         .map(|r| r.ranked_error(floor))
         .min_by(f64::total_cmp)?;
-    fast.into_iter()
+    cheap
+        .into_iter()
         .filter(|r| r.ranked_error(floor) <= lowest + floor.limit())
-        .min_by(|a, b| a.time.median.total_cmp(&b.time.median))
+        .min_by(|a, b| cost(a).total_cmp(&cost(b)))
 }
 
-/// The rows by efficiency, 1 / (MSE × seconds), most efficient first.
+/// The rows that have an efficiency ([`Summary::efficiency`]), most
+/// efficient first.
 pub fn by_efficiency(rows: &[Summary], floor: Floor) -> Vec<&Summary> {
-    let mut sorted: Vec<&Summary> = rows.iter().collect();
-    sorted.sort_by(|a, b| b.efficiency(floor).total_cmp(&a.efficiency(floor)));
-    sorted
+    let mut sorted: Vec<(&Summary, f64)> = rows
+        .iter()
+        .filter_map(|r| Some((r, r.efficiency(floor)?)))
+        .collect();
+    sorted.sort_by(|a, b| b.1.total_cmp(&a.1));
+    sorted.into_iter().map(|(r, _)| r).collect()
 }
 
 /// The slope of log(error) against log(samples), fitted by least squares
@@ -105,6 +115,24 @@ fn error_cell(v: f64, at_floor: bool) -> String {
     }
 }
 
+/// The bias² cell: the estimate ± its SE, and what it allows: "at floor"
+/// only where even 2 SE above it is within the floor's limit, and where the
+/// seeds cannot tell, how many would (if the setting had no bias).
+pub fn bias_cell(r: &Summary, floor: Floor) -> String {
+    match floor.judge(r.bias2) {
+        Verdict::AtFloor => format!("at floor ({})", r.bias2),
+        Verdict::Above => r.bias2.to_string(),
+        Verdict::Unresolved => {
+            let seeds = floor.seeds_to_tell(r.bias2, r.renders);
+            if seeds < 10_000 {
+                format!("{}, can't tell ({seeds} seeds would)", r.bias2)
+            } else {
+                format!("{}, can't tell", r.bias2)
+            }
+        }
+    }
+}
+
 /// The header of [`table`]; ꟻLIP only when it was measured.
 fn header(flip: bool) -> Vec<&'static str> {
     let mut header = vec![
@@ -112,8 +140,8 @@ fn header(flip: bool) -> Vec<&'static str> {
         "rays",
         "time (s): median (min–max)",
         "RMSE: mean ± sd",
-        "bias²",
-        "variance",
+        "bias² ± SE",
+        "variance ± SE",
         "rel. MSE",
         "PSNR 8-bit (dB)",
         "px off",
@@ -121,7 +149,7 @@ fn header(flip: bool) -> Vec<&'static str> {
     if flip {
         header.push("ꟻLIP");
     }
-    header.push("1/(MSE·s)");
+    header.push("1/(MSE·rays)");
     header
 }
 
@@ -140,9 +168,9 @@ fn cells(name: &str, r: &Summary, floor: Floor, flip: bool) -> Vec<String> {
         r.rays.to_string(),
         format!("{:.3} ({:.3}–{:.3})", t.median, t.min, t.max),
         rmse,
-        error_cell(r.bias2, floor.holds(r.bias2)),
+        bias_cell(r, floor),
         if r.setting.sampling.is_random() {
-            sci(r.variance)
+            r.variance.to_string()
         } else {
             "0 (no seed)".to_owned()
         },
@@ -157,11 +185,10 @@ fn cells(name: &str, r: &Summary, floor: Floor, flip: bool) -> Vec<String> {
     if flip {
         cells.push(r.flip.map_or("–".to_owned(), |f| format!("{f:.4}")));
     }
-    let efficiency = sci(r.efficiency(floor));
-    cells.push(if r.at_floor {
-        format!("≥ {efficiency}")
-    } else {
-        efficiency
+    cells.push(match r.efficiency(floor) {
+        Some(e) if r.at_floor => format!("≥ {}", sci(e)),
+        Some(e) => sci(e),
+        None => "– (biased)".to_owned(),
     });
     cells
 }
@@ -179,36 +206,39 @@ pub fn named(row: &Summary) -> (String, &Summary) {
     (row.setting.name(), row)
 }
 
-/// The equal-time table: for each budget, the best row within it, and
-/// the best with one centre ray, for comparison.
-pub fn equal_time_table(rows: &[Summary], floor: Floor, budgets: &[f64]) -> String {
+/// The equal-cost table: for each budget of rays per pixel (of every
+/// kind), the best row within it, and the best with one centre ray, for
+/// comparison; `pixels` is the picture's pixel count.
+pub fn equal_rays_table(rows: &[Summary], floor: Floor, budgets: &[f64], pixels: u32) -> String {
     let centre: Vec<Summary> = rows
         .iter()
         .filter(|r| !r.setting.sampling.is_random())
         .cloned()
         .collect();
+    let per_pixel = |r: &Summary| r.rays as f64 / f64::from(pixels.max(1));
     let describe = |best: Option<&Summary>| match best {
         Some(r) => [
             r.setting.name(),
             error_cell(r.rmse, r.at_floor),
-            format!("{:.3}", r.time.median),
+            format!("{:.1}", per_pixel(r)),
         ],
         None => [
-            "none is this fast".to_owned(),
+            "none is this cheap".to_owned(),
             "–".to_owned(),
             "–".to_owned(),
         ],
     };
     let lines = budgets.iter().map(|&budget| {
-        let [name, rmse, time] = describe(best_within(rows, floor, budget));
-        let [c_name, c_rmse, _] = describe(best_within(&centre, floor, budget));
-        vec![format!("{budget} s"), name, rmse, time, c_name, c_rmse]
+        let rays = budget * f64::from(pixels);
+        let [name, rmse, used] = describe(best_within(rows, floor, rays));
+        let [c_name, c_rmse, _] = describe(best_within(&centre, floor, rays));
+        vec![format!("{budget}"), name, rmse, used, c_name, c_rmse]
     });
     let header = [
-        "budget",
+        "rays per pixel",
         "best setting",
         "RMSE",
-        "time (s)",
+        "its rays per pixel",
         "best with one centre ray",
         "its RMSE",
     ];
@@ -230,16 +260,20 @@ struct CsvRecord {
     seconds_min: f64,
     seconds_max: f64,
     mse: f64,
+    mse_se: f64,
     rmse_mean: f64,
     rmse_sd: f64,
     bias2: f64,
+    bias2_se: f64,
+    bias2_verdict: String,
     variance: f64,
+    variance_se: f64,
     relative_mse: f64,
     psnr_8bit_db: String,
     pixels_off: f64,
     flip: Option<f64>,
     at_floor: bool,
-    efficiency: f64,
+    efficiency: Option<f64>,
 }
 
 /// `rows` as CSV, each with its group ("grid" or "effects"): a header,
@@ -259,11 +293,15 @@ pub fn csv<'a>(rows: impl IntoIterator<Item = (&'a str, &'a Summary)>, floor: Fl
             seconds_median: r.time.median,
             seconds_min: r.time.min,
             seconds_max: r.time.max,
-            mse: r.mse,
+            mse: r.mse.value,
+            mse_se: r.mse.se,
             rmse_mean: r.rmse,
             rmse_sd: r.rmse_sd,
-            bias2: r.bias2,
-            variance: r.variance,
+            bias2: r.bias2.value,
+            bias2_se: r.bias2.se,
+            bias2_verdict: format!("{:?}", floor.judge(r.bias2)),
+            variance: r.variance.value,
+            variance_se: r.variance.se,
             relative_mse: r.relative_mse,
             psnr_8bit_db: r.psnr.to_string(),
             pixels_off: r.pixels_off,

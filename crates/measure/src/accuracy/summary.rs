@@ -1,17 +1,28 @@
 //! A row's renders summed up in the numbers the report ranks by: the mean
-//! error over the seeds with its spread, bias² and variance, the rays, the
-//! time as a median with its spread, and whether the error can be told
-//! apart from the reference's own at all.
+//! error over the seeds with its spread, bias² and variance with their
+//! standard errors, the rays, the time as a median with its spread, and
+//! what those standard errors allow saying about the reference's floor.
 
+use super::estimate::Estimate;
 use super::measure::Row;
 use super::metrics::Psnr;
 use super::settings::Setting;
 
-/// How many times the reference's own MSE a row's MSE must exceed to be
-/// told apart from it: below that (an RMSE within twice the reference's),
-/// the row is "at the reference's floor", and its true error could be
-/// anything from 0 to about this.
+/// How many times the reference's own MSE a row's MSE (or bias²) may be
+/// and still be "at the reference's floor": an RMSE within twice the
+/// reference's. Below that the reference cannot tell a row's error from its
+/// own, and the row's true error could be anything from 0 to about this.
 pub const FLOOR_FACTOR: f64 = 4.0;
+
+/// How many standard errors an estimate must keep from the floor's limit
+/// before the report says on which side of it the truth lies: about 95%
+/// of estimates fall within 2 SE of their expectation.
+pub const STANDARD_ERRORS: f64 = 2.0;
+
+/// A bias² counts as negligible against the MSE (so that the MSE is the
+/// estimator's variance, and efficiency means what it says) when, even 2
+/// SE above its estimate, it is below this share of the MSE.
+pub const NEGLIGIBLE_BIAS: f64 = 0.1;
 
 /// A median with the smallest and largest values around it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -38,8 +49,23 @@ impl Spread {
 /// from the reference.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Floor {
-    /// The reference's own MSE, estimated from its two renders.
+    /// The reference's own MSE, estimated from its two renders. A bias² is
+    /// measured against the reference, so a bias² of zero reads as this
+    /// ([`super::estimate`]).
     pub mse: f64,
+}
+
+/// What an estimate and its standard error allow the report to say.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verdict {
+    /// Even 2 SE above the estimate is within the floor's limit, and 2 SE
+    /// fit between the floor and its limit: the row cannot be told from
+    /// the reference, and the seeds were enough to say so.
+    AtFloor,
+    /// Even 2 SE below the estimate is above the floor's limit: measured.
+    Above,
+    /// The limit is within 2 SE: these seeds cannot tell.
+    Unresolved,
 }
 
 impl Floor {
@@ -49,10 +75,48 @@ impl Floor {
         FLOOR_FACTOR * self.mse
     }
 
-    /// Whether an MSE (or a bias², which may come out a little below 0)
-    /// is at the floor.
-    pub fn holds(self, mse: f64) -> bool {
-        mse <= self.limit()
+    /// On which side of [`Floor::limit`] `e` lies, if its standard error
+    /// allows telling ([`STANDARD_ERRORS`] of them on either side).
+    ///
+    /// "At floor" asks for more than an upper bound below the limit: its
+    /// 2 SE must also fit in the room between the floor and the limit. A
+    /// bias² has the floor as its least expected value, so an estimate far
+    /// below it (−2·10⁻⁴ ± 10⁻⁴ against a floor of 2·10⁻⁶, as 4 seeds of one
+    /// jittered ray give) is noise that its SE, from a few seeds, did not
+    /// catch, and says nothing about the floor.
+    pub fn judge(self, e: Estimate) -> Verdict {
+        let resolves = STANDARD_ERRORS * e.se <= self.limit() - self.mse;
+        if resolves && e.value + STANDARD_ERRORS * e.se <= self.limit() {
+            Verdict::AtFloor
+        } else if e.value - STANDARD_ERRORS * e.se > self.limit() {
+            Verdict::Above
+        } else {
+            Verdict::Unresolved
+        }
+    }
+
+    /// The seeds a bias² measured with `seeds` seeds would need to be
+    /// told from the limit, if its estimate stayed where it is (or at the
+    /// floor, its least expected value, if below it): below the limit it
+    /// needs 2 SE ≤ limit − that (which also fits 2 SE between floor and
+    /// limit), above it 2 SE < estimate − limit. Where the noise rules, the
+    /// bias²'s variance is 2σ⁴/(K(K−1)) over the values (the test of
+    /// [`super::estimate`] checks it), so its SE falls as 1/√(K(K−1)).
+    /// `usize::MAX` for an estimate exactly at the limit.
+    pub fn seeds_to_tell(self, bias2: Estimate, seeds: usize) -> usize {
+        let room = (self.limit() - bias2.value.max(self.mse)).abs();
+        if room == 0.0 {
+            return usize::MAX;
+        }
+        let k = seeds as f64;
+        let needed = k * (k - 1.0) * (STANDARD_ERRORS * bias2.se / room).powi(2);
+        // The smallest n with n(n − 1) ≥ needed.
+        let n = (0.5 + (0.25 + needed).sqrt()).ceil();
+        if n.is_finite() && n < 1e9 {
+            (n as usize).max(seeds)
+        } else {
+            usize::MAX
+        }
     }
 }
 
@@ -62,18 +126,20 @@ pub struct Summary {
     pub setting: Setting,
     /// Rays of every kind traced by one render (exact, the mean over seeds).
     pub rays: u64,
-    /// Wall time of one render, in seconds, over the timed renders.
+    /// Wall time of one render, in seconds, over the renders (shown,
+    /// never ranked by: see the page).
     pub time: Spread,
     /// Renders measured (seeds).
     pub renders: usize,
-    /// The mean MSE over the seeds (unclamped linear values).
-    pub mse: f64,
+    /// The mean MSE over the seeds (unclamped linear values), with its SE.
+    pub mse: Estimate,
     /// The RMSE, mean over the seeds, and its standard deviation over them.
     pub rmse: f64,
     pub rmse_sd: f64,
-    /// The MSE split: mse = bias2 + variance.
-    pub bias2: f64,
-    pub variance: f64,
+    /// The MSE split: mse = bias2 + variance, each with its SE
+    /// ([`super::estimate`]).
+    pub bias2: Estimate,
+    pub variance: Estimate,
     /// The mean relative MSE over the seeds.
     pub relative_mse: f64,
     /// The PSNR of the mean 8-bit MSE.
@@ -82,7 +148,7 @@ pub struct Summary {
     pub pixels_off: f64,
     /// The mean ꟻLIP error, if measured.
     pub flip: Option<f64>,
-    /// Whether the MSE is within [`FLOOR_FACTOR`] of the reference's.
+    /// Whether the MSE, with its SE, is within the floor's limit.
     pub at_floor: bool,
 }
 
@@ -95,20 +161,19 @@ impl Summary {
             |f: &dyn Fn(&super::metrics::Errors) -> f64| row.errors.iter().map(f).sum::<f64>() / k;
         let rmses: Vec<f64> = row.errors.iter().map(|e| e.mse.sqrt()).collect();
         let rmse = rmses.iter().sum::<f64>() / k;
-        let rmse_sd = if rmses.len() > 1 {
+        let rmse_sd = if rmses.len() > 1 && row.setting.sampling.is_random() {
             let squares: f64 = rmses.iter().map(|r| (r - rmse) * (r - rmse)).sum();
             (squares / (k - 1.0)).sqrt()
         } else {
             0.0
         };
-        let mse = mean(&|e| e.mse);
         let flips: Option<Vec<f64>> = row.errors.iter().map(|e| e.flip).collect();
         Summary {
             setting: row.setting,
             rays: row.rays,
             time: Spread::of(&row.seconds),
             renders: row.errors.len(),
-            mse,
+            mse: row.mse,
             rmse,
             rmse_sd,
             bias2: row.bias2,
@@ -117,7 +182,7 @@ impl Summary {
             psnr: Psnr::of(mean(&|e| e.mse_8bit), pixels),
             pixels_off: mean(&|e| e.pixels_off),
             flip: flips.map(|f| f.iter().sum::<f64>() / k),
-            at_floor: floor.holds(mse),
+            at_floor: floor.judge(row.mse) == Verdict::AtFloor,
         }
     }
 
@@ -128,13 +193,29 @@ impl Summary {
         if self.at_floor {
             floor.limit()
         } else {
-            self.mse
+            self.mse.value
         }
     }
 
-    /// Efficiency = 1 / (MSE × median seconds): the higher, the more
-    /// accuracy a second buys (for a row at the floor, a lower bound).
-    pub fn efficiency(&self, floor: Floor) -> f64 {
-        1.0 / (self.ranked_error(floor) * self.time.median)
+    /// Whether the row's bias² is negligible against its MSE: a jittered
+    /// row whose bias², even [`STANDARD_ERRORS`] above its estimate, is
+    /// below [`NEGLIGIBLE_BIAS`] of the MSE, or at the floor. One centre
+    /// ray is all bias.
+    pub fn bias_is_negligible(&self, floor: Floor) -> bool {
+        let upper = self.bias2.value + STANDARD_ERRORS * self.bias2.se;
+        self.setting.sampling.is_random()
+            && (upper <= NEGLIGIBLE_BIAS * self.mse.value
+                || floor.judge(self.bias2) == Verdict::AtFloor)
+    }
+
+    /// Efficiency = 1 / (MSE × rays traced), where the MSE is all
+    /// variance: the higher, the more accuracy a ray buys. Defined for an
+    /// unbiased estimator (Veach 1997, where it is 1/(variance × time));
+    /// rays, not seconds, since they are exact. `None` where the bias is
+    /// not negligible ([`Summary::bias_is_negligible`]): there more rays
+    /// buy nothing against the bias, and the number would mislead.
+    pub fn efficiency(&self, floor: Floor) -> Option<f64> {
+        self.bias_is_negligible(floor)
+            .then(|| 1.0 / (self.ranked_error(floor) * self.rays.max(1) as f64))
     }
 }
