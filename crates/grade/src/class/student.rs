@@ -312,12 +312,10 @@ fn keep_pictures(
 ) -> Result<Vec<Picture>, String> {
     let folder = Path::new("snapshot-failures").join(&chapter.folder);
     let shown = format!("target/snapshot-failures/{}", chapter.folder);
-    let listed = place
-        .target_folder()?
-        .folder(&folder)
-        .and_then(|f| f.entries());
-    let entries = match listed {
-        Ok(entries) => entries,
+    let opened = place.target_folder()?.folder(&folder);
+    let listed = opened.and_then(|failures| Ok((failures.entries()?, failures)));
+    let (entries, failures) = match listed {
+        Ok(listed) => listed,
         Err(Refused::Missing) => return Ok(Vec::new()),
         Err(why) => {
             flags.push(format!("failure pictures {shown}: {why}"));
@@ -345,7 +343,7 @@ fn keep_pictures(
             ));
             break;
         }
-        let read = (place.target_folder()?).read(&folder.join(&*name), outbound::MAX_BYTES, by);
+        let read = failures.read(Path::new(&*name), outbound::MAX_BYTES, by);
         let bytes = match read {
             Ok(bytes) => bytes,
             Err(why) => {
