@@ -9,7 +9,8 @@ use std::sync::OnceLock;
 use indicatif::ProgressBar;
 use measure::accuracy::{
     Estimate, FLOOR_FACTOR, Floor, Plan, Sampling, Setting, Spread, Study, Summary, Tracer,
-    Verdict, best_within, bias_cell, by_efficiency, csv, page, pareto, reference, study,
+    Verdict, best_within, bias_cell, by_efficiency, csv, judge_at_most_rays, page, pareto,
+    reference, study,
 };
 use raybook::scene_files;
 use raybook::toolkit::Scene;
@@ -179,6 +180,84 @@ fn at_floor_is_not_claimed_when_the_standard_error_forbids_it() {
     row.bias2.value = 4e-6;
     assert_eq!(floor.seeds_to_tell(row.bias2, 4), usize::MAX);
     assert!(!bias_cell(&row, floor).contains("seeds would"));
+}
+
+/// A termination's bias does not depend on the jittered rays per pixel,
+/// so a row of few rays, whose bias² is mostly noise, takes the verdict of
+/// its termination's row with the most rays, and says so; centre rows and
+/// the most-rays rows are judged on their own.
+#[test]
+fn jittered_rows_are_judged_at_the_most_rays() {
+    let floor = Floor { mse: 1e-6 };
+    let mut rows = vec![fixture(6, 1, 0.1, 1e-2), fixture(6, 16, 1.6, 1e-3)];
+    let mut centre = fixture(6, 1, 0.1, 1e-2);
+    centre.setting.sampling = Sampling::Centre;
+    rows.push(centre);
+    rows.push(fixture(1, 4, 0.4, 1e-2));
+    rows[0].bias2 = Estimate {
+        value: -1.5e-4,
+        se: 1e-4,
+    };
+    rows[1].bias2 = Estimate {
+        value: 1.5e-6,
+        se: 1e-6,
+    };
+    rows[2].bias2 = Estimate::exact(8e-3);
+    rows[3].bias2 = Estimate {
+        value: 1e-2,
+        se: 1e-4,
+    };
+    judge_at_most_rays(&mut rows);
+    let judged = rows[0].judged_on.expect("1 jittered is judged on 16");
+    assert_eq!(judged.samples, 16);
+    assert_eq!(rows[0].verdict(floor), Verdict::AtFloor);
+    assert_eq!(
+        floor.judge(rows[0].bias2),
+        Verdict::Unresolved,
+        "alone, it can't tell"
+    );
+    assert!(
+        rows[0].agrees_with_judged(),
+        "-1.5e-4 is within 2 SE of 1.5e-6"
+    );
+    let cell = bias_cell(&rows[0], floor);
+    assert!(cell.contains("at floor at 16 jittered"), "{cell}");
+    assert!(!cell.contains("misses"), "{cell}");
+    for (i, why) in [
+        (1, "the most rays"),
+        (2, "a centre ray"),
+        (3, "the only jittered row of depth 1"),
+    ] {
+        assert_eq!(rows[i].judged_on, None, "{why} is judged on its own");
+        assert!(rows[i].agrees_with_judged());
+    }
+    // An own estimate far from the judged one is flagged: the assumption
+    // that bias does not move with N would have failed.
+    rows[0].bias2 = Estimate {
+        value: 1e-3,
+        se: 1e-5,
+    };
+    assert!(!rows[0].agrees_with_judged());
+    assert!(bias_cell(&rows[0], floor).contains("misses it by over 2 SE"));
+    // The small study: every jittered row but the 16-ray ones is judged on
+    // the 16-ray row of its termination, and agrees with it.
+    let study = small_study();
+    for r in &study.grid {
+        let most = r.setting.sampling == Sampling::Jittered(16);
+        let expected = (r.setting.sampling.is_random() && !most).then_some(16);
+        assert_eq!(
+            r.judged_on.map(|j| j.samples),
+            expected,
+            "{}",
+            r.setting.name()
+        );
+        assert!(
+            r.agrees_with_judged(),
+            "{}: {}",
+            r.setting.name(),
+            bias_cell(r, study.floor)
+        );
+    }
 }
 
 #[test]
@@ -369,6 +448,7 @@ fn fixture(depth: u32, samples: u32, seconds: f64, mse: f64) -> Summary {
         pixels_off: 0.0,
         flip: None,
         at_floor: false,
+        judged_on: None,
     }
 }
 

@@ -49,7 +49,8 @@ pub use report::{
 pub use settings::{Plan, REFERENCE_FACTOR, Sampling, Setting, Tracer, reference_setting};
 pub use study::Study;
 pub use summary::{
-    FLOOR_FACTOR, Floor, NEGLIGIBLE_BIAS, STANDARD_ERRORS, Spread, Summary, Verdict,
+    FLOOR_FACTOR, Floor, Judged, NEGLIGIBLE_BIAS, STANDARD_ERRORS, Spread, Summary, Verdict,
+    judge_at_most_rays,
 };
 
 /// `raybook accuracy`: renders a scene at many settings and shows, measured
@@ -235,7 +236,8 @@ pub fn study(
         mse: reference.floor_mse,
     };
     let pixels = (plan.width * plan.height) as usize;
-    let summaries: Vec<Summary> = rows.iter().map(|r| Summary::of(r, floor, pixels)).collect();
+    let mut summaries: Vec<Summary> = rows.iter().map(|r| Summary::of(r, floor, pixels)).collect();
+    judge_at_most_rays(&mut summaries);
     let find = |s: &Setting| summaries.iter().find(|r| r.setting == *s).cloned();
     let effects = plan
         .effect_steps()

@@ -99,8 +99,11 @@ fn seeds(page: &mut String, study: &Study) {
          {k} seeds a row. bias² reads \"at floor\" when 2 SE fit in the room between the floor \
          and its limit, {room:.2e}, so SE ≤ {half:.2e} is needed. A termination's bias does not \
          depend on the rays per pixel (jittered rays average the same paths), so it is judged \
-         where its SE is smallest, at the most rays per pixel; the seeds are chosen so that \
-         those rows tell. Rows with fewer rays can tell only with the seeds below.\n",
+         where its SE is smallest, at the most rays per pixel: every jittered row's verdict is \
+         that of its termination's row with the most rays, and the seeds are chosen so that those \
+         rows tell. Each row's own estimate stays in the tables, with its own SE, and the table \
+         counts how many lie within 2 SE (of the difference) of the one they are judged by, as \
+         they must if the bias does not depend on the rays per pixel.\n",
         k = study.plan.seeds,
         half = room / STANDARD_ERRORS,
     );
@@ -112,16 +115,19 @@ fn seeds(page: &mut String, study: &Study) {
         .map(|&sampling| seeds_line(study, sampling));
     let header = [
         "sampling",
+        "judged at",
         "bias² at floor",
         "above the floor",
         "can't tell",
-        "largest SE of bias²",
+        "largest SE of its own bias²",
+        "own within 2 SE of judged",
         "seeds to tell every row",
     ];
     let _ = writeln!(page, "{}\n", markdown(header, lines, 1));
 }
 
-/// One line of the seeds table: the grid's rows of `sampling`.
+/// One line of the seeds table: the grid's rows of `sampling`, counted by
+/// the verdict they are judged by, and how many of them agree with it.
 fn seeds_line(study: &Study, sampling: Sampling) -> Vec<String> {
     let floor = study.floor;
     let rows: Vec<&Summary> = study
@@ -131,14 +137,19 @@ fn seeds_line(study: &Study, sampling: Sampling) -> Vec<String> {
         .collect();
     let count = |v: Verdict| {
         rows.iter()
-            .filter(|r| floor.judge(r.bias2) == v)
+            .filter(|r| r.verdict(floor) == v)
             .count()
             .to_string()
     };
     let largest = rows.iter().map(|r| r.bias2.se).fold(0.0, f64::max);
+    let judged_at = rows
+        .iter()
+        .find_map(|r| r.judged_on)
+        .map_or("its own".to_owned(), |j| format!("{} jittered", j.samples));
+    let agree = rows.iter().filter(|r| r.agrees_with_judged()).count();
     let needed = rows
         .iter()
-        .filter(|r| floor.judge(r.bias2) == Verdict::Unresolved)
+        .filter(|r| r.judged_on.is_none() && r.verdict(floor) == Verdict::Unresolved)
         .map(|r| floor.seeds_to_tell(r.bias2, r.renders))
         .max()
         .map_or(format!("{} (all tell)", study.plan.seeds), |n| {
@@ -150,10 +161,12 @@ fn seeds_line(study: &Study, sampling: Sampling) -> Vec<String> {
         });
     vec![
         sampling.name(),
+        judged_at,
         count(Verdict::AtFloor),
         count(Verdict::Above),
         count(Verdict::Unresolved),
         format!("{largest:.1e}"),
+        format!("{agree} of {}", rows.len()),
         needed,
     ]
 }

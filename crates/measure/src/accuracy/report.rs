@@ -117,8 +117,32 @@ fn error_cell(v: f64, at_floor: bool) -> String {
 
 /// The bias² cell: the estimate ± its SE, and what it allows: "at floor"
 /// only where even 2 SE above it is within the floor's limit, and where the
-/// seeds cannot tell, how many would (if the setting had no bias).
+/// seeds cannot tell, how many would (if the setting had no bias). A
+/// jittered row judged on its termination's most rays per pixel
+/// ([`super::summary::judge_at_most_rays`]) says so, and says if its own
+/// estimate misses that one by over 2 SE.
 pub fn bias_cell(r: &Summary, floor: Floor) -> String {
+    let Some(judged) = r.judged_on else {
+        return own_bias_cell(r, floor);
+    };
+    let verdict = match r.verdict(floor) {
+        Verdict::AtFloor => "at floor",
+        Verdict::Above => "above the floor",
+        Verdict::Unresolved => "can't tell",
+    };
+    let check = if r.agrees_with_judged() {
+        ""
+    } else {
+        "; misses it by over 2 SE"
+    };
+    format!(
+        "{}; {verdict} at {} jittered{check}",
+        r.bias2, judged.samples
+    )
+}
+
+/// [`bias_cell`] for a row judged on its own bias².
+fn own_bias_cell(r: &Summary, floor: Floor) -> String {
     match floor.judge(r.bias2) {
         Verdict::AtFloor => format!("at floor ({})", r.bias2),
         Verdict::Above => r.bias2.to_string(),
@@ -274,6 +298,9 @@ struct CsvRecord {
     flip: Option<f64>,
     at_floor: bool,
     efficiency: Option<f64>,
+    /// The rays per pixel of the row `bias2_verdict` was judged on, where
+    /// not this row's own (last, so that older readers keep their columns).
+    bias2_judged_at: Option<u32>,
 }
 
 /// `rows` as CSV, each with its group ("grid" or "effects"): a header,
@@ -299,7 +326,8 @@ pub fn csv<'a>(rows: impl IntoIterator<Item = (&'a str, &'a Summary)>, floor: Fl
             rmse_sd: r.rmse_sd,
             bias2: r.bias2.value,
             bias2_se: r.bias2.se,
-            bias2_verdict: format!("{:?}", floor.judge(r.bias2)),
+            bias2_verdict: format!("{:?}", r.verdict(floor)),
+            bias2_judged_at: r.judged_on.map(|j| j.samples),
             variance: r.variance.value,
             variance_se: r.variance.se,
             relative_mse: r.relative_mse,

@@ -150,6 +150,56 @@ pub struct Summary {
     pub flip: Option<f64>,
     /// Whether the MSE, with its SE, is within the floor's limit.
     pub at_floor: bool,
+    /// For a jittered row with fewer rays per pixel than its
+    /// termination's most, the row its bias² is judged on
+    /// ([`judge_at_most_rays`]); `None` where it is judged on its own.
+    pub judged_on: Option<Judged>,
+}
+
+/// The bias² a jittered row is judged by: that of the same termination and
+/// effects at the most jittered rays per pixel, with its SE.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Judged {
+    /// The rays per pixel of the row judged on.
+    pub samples: u32,
+    pub bias2: Estimate,
+}
+
+/// Judges every jittered row's bias² where its SE is smallest.
+///
+/// Jittered rays put the expectation of a pixel at the average of the
+/// radiance over the pixel's area, whatever their number N, and so does the
+/// reference: what remains is the termination's bias (what depth and
+/// threshold leave out), the same for every N. Only its noise falls with N,
+/// and with 1 or 4 rays a bias² estimate from a few seeds is 10–100 times
+/// the floor in either direction. So each jittered row is judged on the row
+/// of the same termination and effects with the most rays per pixel; its
+/// own estimate stays in the tables, and [`Summary::agrees_with_judged`]
+/// checks that the two tell the same story.
+pub fn judge_at_most_rays(rows: &mut [Summary]) {
+    let judged: Vec<Option<Judged>> = rows
+        .iter()
+        .map(|row| {
+            let most = rows
+                .iter()
+                .filter(|r| same_termination(r, row) && r.setting.sampling.is_random())
+                .max_by_key(|r| r.setting.sampling.samples())?;
+            (row.setting.sampling.is_random() && most.setting != row.setting).then(|| Judged {
+                samples: most.setting.sampling.samples(),
+                bias2: most.bias2,
+            })
+        })
+        .collect();
+    for (row, judged) in rows.iter_mut().zip(judged) {
+        row.judged_on = judged;
+    }
+}
+
+/// Whether two rows differ only in their sampling.
+fn same_termination(a: &Summary, b: &Summary) -> bool {
+    a.setting.termination == b.setting.termination
+        && a.setting.effects == b.setting.effects
+        && a.setting.tracer == b.setting.tracer
 }
 
 impl Summary {
@@ -183,7 +233,28 @@ impl Summary {
             pixels_off: mean(&|e| e.pixels_off),
             flip: flips.map(|f| f.iter().sum::<f64>() / k),
             at_floor: floor.judge(row.mse) == Verdict::AtFloor,
+            judged_on: None,
         }
+    }
+
+    /// The bias² the row is judged by: its termination's at the most rays
+    /// per pixel where [`judge_at_most_rays`] found one, else its own.
+    pub fn judged_bias2(&self) -> Estimate {
+        self.judged_on.map_or(self.bias2, |j| j.bias2)
+    }
+
+    /// What the floor says of [`Summary::judged_bias2`].
+    pub fn verdict(&self, floor: Floor) -> Verdict {
+        floor.judge(self.judged_bias2())
+    }
+
+    /// Whether the row's own bias² is within 2 SE (of the difference) of
+    /// the one it is judged by, as it must be if the bias does not depend
+    /// on the rays per pixel. Always true for a row judged on itself.
+    pub fn agrees_with_judged(&self) -> bool {
+        let judged = self.judged_bias2();
+        let se = self.bias2.se.hypot(judged.se);
+        (self.bias2.value - judged.value).abs() <= STANDARD_ERRORS * se
     }
 
     /// The error the report ranks by: the MSE, or for a row at the floor
@@ -198,14 +269,15 @@ impl Summary {
     }
 
     /// Whether the row's bias² is negligible against its MSE: a jittered
-    /// row whose bias², even [`STANDARD_ERRORS`] above its estimate, is
+    /// row whose judged bias² ([`Summary::judged_bias2`]), even [`STANDARD_ERRORS`] above its estimate, is
     /// below [`NEGLIGIBLE_BIAS`] of the MSE, or at the floor. One centre
     /// ray is all bias.
     pub fn bias_is_negligible(&self, floor: Floor) -> bool {
-        let upper = self.bias2.value + STANDARD_ERRORS * self.bias2.se;
+        let bias2 = self.judged_bias2();
+        let upper = bias2.value + STANDARD_ERRORS * bias2.se;
         self.setting.sampling.is_random()
             && (upper <= NEGLIGIBLE_BIAS * self.mse.value
-                || floor.judge(self.bias2) == Verdict::AtFloor)
+                || self.verdict(floor) == Verdict::AtFloor)
     }
 
     /// Efficiency = 1 / (MSE × rays traced), where the MSE is all
