@@ -101,7 +101,7 @@ pub fn direct_light(
     mut visible: impl FnMut(&Surface, &Incoming) -> bool,
     reflect: impl Fn(&Incoming) -> Color,
 ) -> Color {
-    // EXERCISE(ch03-light-loop): the sum over the scene's lights (see `arrival`): ambient adds albedo × its colour; a light in front of the surface adds reflect(incoming) if visible, and visible is asked only when that light could add something
+    // EXERCISE(ch03-light-loop): the sum over the scene's lights (see `arrival`): what each of arrival's three answers adds, with visible asked only about a light that could add something
     crate::workbench::exercise::solution_begins("ch03-light-loop");
     let mut color = Color::ZERO;
     for light in &scene.lights {
