@@ -84,10 +84,10 @@ pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
 ///   the eye) points to, not in its plane or behind it, and
 ///   `visible(surface, incoming)` says that nothing blocks it. A light
 ///   behind the surface adds nothing, whatever `reflect` would say.
-/// * `visible` is not even asked about a light that could add nothing: one
-///   behind the surface, one outside its cone ([`Arrival::Dark`]), or one
-///   whose `reflect` is zero (a black mirror). Chapter 4's `visible` traces
-///   a shadow ray, so every question costs a ray.
+/// * `visible` is not even asked about a light that could add nothing
+///   (which lights those are, and in which order to ask, is the README's
+///   question). Chapter 4's `visible` traces a shadow ray, so every
+///   question costs a ray, and the tests count the questions.
 ///
 /// Lights add: two lights make a point brighter than either alone, and the
 /// sum may exceed 1 (no clamping here: the picture clamps it when it is
