@@ -14,8 +14,8 @@ use toolkit::{Color, Image, Scene, Stats};
 /// 1. its ray hits nothing: the background is all there is to see;
 /// 2. it would bounce more than `max_depth` times; or
 /// 3. its weight, the product of the weights along it, is below
-///    `min_weight` in every channel ([`below_threshold`]): whatever it
-///    finds counts with less than that weight in the pixel.
+///    `min_weight` ([`below_threshold`], which says what "below" means for
+///    three channels): whatever it finds counts too little in the pixel.
 ///
 /// The weight bounds a path's share of the pixel *relative to the colour
 /// it would bring back*. Colours are not clamped until the pixel is
