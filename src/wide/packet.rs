@@ -514,8 +514,8 @@ impl Triangles {
     /// on its rounding error. Chapter 2's t (`triangle_plane_t`, in f64) is
     /// exact to its rounding to f32, so it lies within the bounds too.
     ///
-    /// The bound is pbrt-v4's (Pharr, Jakob and Humphreys, section 6.8.4,
-    /// "Conservative Ray–Triangle t Tests"), with γₙ = nu/(1 − nu), u = ε/2:
+    /// The bound is pbrt-v4's (Pharr, Jakob and Humphreys, section 6.8.7,
+    /// "Avoiding Intersections behind Ray Origins", its part on triangles), with γₙ = nu/(1 − nu), u = ε/2:
     /// the corners' z are off by δz = γ₃·max|zᵢ|, their x and y by
     /// δx = γ₅(max|xᵢ| + max|p\[kz\]|) (and δy alike), the edge functions by
     /// δe = 2(γ₂·max|xᵢ|·max|yᵢ| + δy·max|xᵢ| + δx·max|yᵢ|), so t by

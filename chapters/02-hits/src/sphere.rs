@@ -62,20 +62,20 @@ pub fn intersect_sphere(
 
 /// The distance at which a ray hits a sphere, from the two roots of its
 /// line, `(near, far)` with near ≤ far ([`sphere_roots`] or
-/// [`sphere_roots_abc`]): the nearest root that lies strictly between
-/// `t_min` and `t_max`. Derived in the README, section *Which root is the
-/// hit?*.
+/// [`sphere_roots_abc`]): the first point of the ray, strictly between
+/// `t_min` and `t_max`, at which it meets the sphere. Which root that is
+/// is the README's question, section *Which root is the hit?*.
 ///
 /// * The roots belong to the whole line: a negative one is behind the
-///   ray's origin. From inside the sphere the near root is behind and the
-///   hit is the far one (the eye sees the sphere's inside).
+///   ray's origin. A ray that starts inside the sphere hits it too (the eye
+///   sees the sphere's inside).
 /// * Both bounds are strict: a root equal to `t_min` is no hit (a ray that
 ///   starts on the sphere and leaves it is not hit at t = 0), nor is one
 ///   equal to `t_max`.
 /// * `None` if neither root lies in (t_min, t_max). (A line that misses
 ///   the sphere has no roots, and its caller asks nothing.)
 pub fn nearest_root((near, far): (f32, f32), t_min: f32, t_max: f32) -> Option<f32> {
-    // EXERCISE(ch02-nearest): the nearest of the two roots that lies strictly between t_min and t_max, if either does
+    // EXERCISE(ch02-nearest): which root, if either, is where the ray (not its line) first meets the sphere strictly between t_min and t_max
     crate::workbench::exercise::solution_begins("ch02-nearest");
     [near, far].into_iter().find(|&t| t > t_min && t < t_max)
     // END EXERCISE

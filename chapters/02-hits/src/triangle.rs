@@ -181,7 +181,7 @@ pub fn triangle_point([p0, p1, p2]: [Vec3; 3], (alpha, beta): (f32, f32)) -> Vec
 /// Two ways to get the point, each with its bound:
 /// * the barycentric mean [`triangle_point`] of the corners: off the plane
 ///   by a few units in the last place of the *corners'* coordinates, 8ε·|p|∞
-///   with p the largest corner (pbrt, 4th ed., section 6.8.4, "Bounding
+///   with p the largest corner (pbrt, 4th ed., section 6.8.5, "Bounding
 ///   Intersection Point Error", bounds it so). A floor whose corners are 10⁶
 ///   away from the point seen gets a point up to 0.95 off the floor, and a
 ///   shadow ray offset as far.

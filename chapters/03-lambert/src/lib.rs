@@ -84,10 +84,10 @@ pub fn lambert(surface: &Surface, incoming: &Incoming) -> Color {
 ///   the eye) points to, not in its plane or behind it, and
 ///   `visible(surface, incoming)` says that nothing blocks it. A light
 ///   behind the surface adds nothing, whatever `reflect` would say.
-/// * `visible` is not even asked about a light that could add nothing: one
-///   behind the surface, one outside its cone ([`Arrival::Dark`]), or one
-///   whose `reflect` is zero (a black mirror). Chapter 4's `visible` traces
-///   a shadow ray, so every question costs a ray.
+/// * `visible` is not even asked about a light that could add nothing
+///   (which lights those are, and in which order to ask, is the README's
+///   question). Chapter 4's `visible` traces a shadow ray, so every
+///   question costs a ray, and the tests count the questions.
 ///
 /// Lights add: two lights make a point brighter than either alone, and the
 /// sum may exceed 1 (no clamping here: the picture clamps it when it is
@@ -101,7 +101,7 @@ pub fn direct_light(
     mut visible: impl FnMut(&Surface, &Incoming) -> bool,
     reflect: impl Fn(&Incoming) -> Color,
 ) -> Color {
-    // EXERCISE(ch03-light-loop): the sum over the scene's lights (see `arrival`): ambient adds albedo × its colour; a light in front of the surface adds reflect(incoming) if visible, and visible is asked only when that light could add something
+    // EXERCISE(ch03-light-loop): the sum over the scene's lights (see `arrival`): what each of arrival's three answers adds, with visible asked only about a light that could add something
     crate::workbench::exercise::solution_begins("ch03-light-loop");
     let mut color = Color::ZERO;
     for light in &scene.lights {

@@ -6,7 +6,7 @@ use clap::Parser;
 
 /// Chapter 3: Lambert shading. Each hit is lit by every light as if nothing
 /// stood in between: ambient light everywhere, point lights falling off with
-/// 1/r², spot lights within their cone; by the cosine law max(0, n·l).
+/// 1/r², spot lights within their cone; each by Lambert's cosine law.
 #[derive(Parser)]
 #[command(version)]
 struct Args {

@@ -123,12 +123,12 @@ impl Path {
 /// * No hit: the scene's background colour. The path ends there, and that
 ///   is counted once in `stats.ended_no_hit` (the first of chapter 7's
 ///   criteria).
-/// * A hit: the [`Surface`] seen there (chapter 3's `Surface::new`), and
-///   the colour of that surface: the tracer's local light
-///   ([`Whitted::local`]) plus what the tracer's secondary rays for that
-///   surface and this ray bring back ([`follow_secondary_rays`], given this
-///   ray's `path`: it works out the deeper paths). With no secondary rays,
-///   the local light is all there is.
+/// * A hit: the colour of the [`Surface`] seen there (chapter 3's
+///   `Surface::new`), by the README's rule for trace(ray, depth), which is
+///   its question. Its parts are the tracer's answers for that surface and
+///   this ray ([`Whitted::local`], [`Whitted::secondary_rays`]) and
+///   [`follow_secondary_rays`], given this ray's `path` (it works out the
+///   deeper paths).
 /// * Nothing else is counted here: the rays traced are counted where they
 ///   are made.
 pub fn trace(

@@ -4,10 +4,11 @@ use ch05_reflection::workbench::cli::{RenderArgs, run_or_explain};
 use ch05_reflection::{CHAPTER, ray_tree, render_mirrors};
 use clap::Parser;
 
-/// Chapter 5: specular reflection. At a mirror, the reflected ray
-/// d_o = d_i − 2(d_i·n)n is traced in turn and its colour, weighted by the
-/// material's reflectance, is added; shiny materials get highlights. The
-/// recursion stops after the scene's [trace] max_depth bounces.
+/// Chapter 5: specular reflection. At a mirror, the reflected ray (the
+/// mirror law: the angle out equals the angle in) is traced in turn and
+/// its colour, weighted by the material's reflectance, is added; shiny
+/// materials get highlights. The recursion stops after the scene's [trace]
+/// max_depth bounces.
 #[derive(Parser)]
 #[command(version)]
 struct Args {

@@ -14,8 +14,8 @@ use toolkit::{Color, Image, Scene, Stats};
 /// 1. its ray hits nothing: the background is all there is to see;
 /// 2. it would bounce more than `max_depth` times; or
 /// 3. its weight, the product of the weights along it, is below
-///    `min_weight` in every channel ([`below_threshold`]): whatever it
-///    finds counts with less than that weight in the pixel.
+///    `min_weight` ([`below_threshold`], which says what "below" means for
+///    three channels): whatever it finds counts too little in the pixel.
 ///
 /// The weight bounds a path's share of the pixel *relative to the colour
 /// it would bring back*. Colours are not clamped until the pixel is
@@ -47,16 +47,16 @@ impl Termination {
 ///
 /// * `weight` is the product of the weights along the path, per channel,
 ///   each channel ≥ 0. `min_weight` is the scene's threshold, ≥ 0.
-/// * `true` only if every channel is strictly below `min_weight`: the
-///   path would bring back too little of every colour to be worth
-///   following. One channel that reaches the threshold is enough to go on:
-///   a weight of (0.5, 0.0001, 0.0001) still carries half of the red the
-///   path finds. Neither the mean nor the brightness of the channels
-///   decides.
-/// * A channel exactly equal to `min_weight` is not below it; with
+/// * `true` when what the path could still bring back is too little to be
+///   worth following, `false` while it may still matter. A weight has three
+///   channels: which test of them says that (each of them, one of them, or
+///   their mean) is the README's question, and a weight of
+///   (0.5, 0.0001, 0.0001), half of the red the path finds, is the case to
+///   think of.
+/// * A weight exactly at `min_weight` is not below it; with
 ///   `min_weight` = 0 no weight is below it.
 pub fn below_threshold(weight: Color, min_weight: f32) -> bool {
-    // EXERCISE(ch07-below-threshold): whether no channel of the weight reaches min_weight
+    // EXERCISE(ch07-below-threshold): whether the path's weight is too small, in the README's sense, to be worth following
     crate::workbench::exercise::solution_begins("ch07-below-threshold");
     weight.max_element() < min_weight
     // END EXERCISE
@@ -89,7 +89,7 @@ impl Whitted for Tracer {
     ///   depth is asked first. A `true` counts nothing here (the caller
     ///   counts the rays it traces).
     fn may_trace(&self, depth: u32, weight: Color, stats: &mut Stats) -> bool {
-        // EXERCISE(ch07-may-trace): a ray may go on unless its depth is beyond max_depth or its path's weight is below the threshold; count each path ended by the criterion that ended it (the depth first)
+        // EXERCISE(ch07-may-trace): a ray may go on unless its path has had its max_depth bounces or its weight is below the threshold; count each path ended by the criterion that ended it (the depth first)
         crate::workbench::exercise::solution_begins("ch07-may-trace");
         if depth > self.termination.max_depth {
             stats.ended_max_depth += 1;

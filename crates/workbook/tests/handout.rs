@@ -393,12 +393,37 @@ fn every_exercise_has_a_hint_then_its_derivation_and_never_its_code() {
     );
 }
 
+/// Every text a student reads beside the code: each chapter's README (a
+/// later chapter may restate an earlier one's answer as it builds on it)
+/// and the book's appendices, by file name.
+fn texts_a_student_reads() -> Vec<(PathBuf, String)> {
+    let mut files: Vec<PathBuf> = chapters::all()
+        .iter()
+        .map(|c| root().join(c.path()).join("README.md"))
+        .collect();
+    let appendix = root().join("book/appendix");
+    for entry in std::fs::read_dir(&appendix).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "md") {
+            files.push(path);
+        }
+    }
+    files
+        .into_iter()
+        .map(|f| {
+            let text = std::fs::read_to_string(&f).unwrap();
+            (f, text)
+        })
+        .collect()
+}
+
 /// The answer comes after an attempt (`workbook hint ID --level 4`), not
 /// beside the question: every exercise has one in its chapter's
-/// `answers.md`, and no line of it stands in the chapter's text or in the
-/// contract that `hint` level 1 shows.
+/// `answers.md`, and no line of it stands in any chapter's text, in an
+/// appendix, in the contract that `hint` level 1 shows or in the `todo!`.
 #[test]
 fn every_exercise_has_an_answer_and_neither_its_text_nor_its_contract_shows_it() {
+    let texts = texts_a_student_reads();
     for (file, line, region) in workspace_regions(&root()).unwrap() {
         let id = region.id.as_str();
         let chapter = exercise_chapters()
@@ -426,6 +451,17 @@ fn every_exercise_has_an_answer_and_neither_its_text_nor_its_contract_shows_it()
                 !contract.contains(shown),
                 "{id}: its answer stands in its contract: {shown:?}"
             );
+            assert!(
+                !region.hint.contains(shown),
+                "{id}: its answer stands in its todo!: {shown:?}"
+            );
+            for (text, words) in &texts {
+                assert!(
+                    !words.contains(shown),
+                    "{id}: its answer stands in {}: {shown:?}",
+                    text.display()
+                );
+            }
         }
     }
 }

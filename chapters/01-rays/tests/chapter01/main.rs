@@ -2,7 +2,7 @@
 
 use ch01_rays::toolkit::scene::CameraSpec;
 use ch01_rays::toolkit::{Scene, Vec3};
-use ch01_rays::workbench::snapshot::assert_image;
+use ch01_rays::workbench::snapshot::{Precise, assert_image_beside};
 use ch01_rays::{CHAPTER, Camera, Ray, render_sky};
 
 fn scene() -> Scene {
@@ -255,8 +255,46 @@ fn one_primary_ray_per_pixel() {
 #[test]
 fn snapshot_default() {
     let (image, _) = render_sky(&scene().with_size(160, 120), || {});
-    assert_image("01-rays", "default", &image);
+    assert_image_beside("01-rays", "default", &image, PRECISE);
 }
+
+/// The tests whose messages say more than the picture's count of pixels:
+/// a picture that differs names those of them that fail beside it (a frame
+/// turned round, a ray through the wrong corner).
+const PRECISE: &[Precise] = &[
+    (
+        "a_ray_walks_t_units_along_its_unit_direction",
+        a_ray_walks_t_units_along_its_unit_direction,
+    ),
+    (
+        "the_frame_is_orthonormal_right_handed_and_upright",
+        the_frame_is_orthonormal_right_handed_and_upright,
+    ),
+    (
+        "the_image_plane_is_tan_half_the_field_of_view_high",
+        the_image_plane_is_tan_half_the_field_of_view_high,
+    ),
+    (
+        "the_centre_of_the_image_looks_at_look_at",
+        the_centre_of_the_image_looks_at_look_at,
+    ),
+    (
+        "the_image_corners_are_the_image_planes_corners",
+        the_image_corners_are_the_image_planes_corners,
+    ),
+    (
+        "the_top_and_bottom_edges_span_the_vertical_field_of_view",
+        the_top_and_bottom_edges_span_the_vertical_field_of_view,
+    ),
+    (
+        "pixels_are_square_whatever_the_aspect_ratio",
+        pixels_are_square_whatever_the_aspect_ratio,
+    ),
+    (
+        "image_x_grows_to_the_right_and_y_grows_down",
+        image_x_grows_to_the_right_and_y_grows_down,
+    ),
+];
 
 #[test]
 fn one_sample_is_the_pixel_centre() {

@@ -10,7 +10,7 @@ fn the_text_shows_these_listings() {
 
 #[test]
 #[rustfmt::skip] // as the text shows it
-fn a_shadow_ray_is_blocked_only_before_the_light() {
+pub(crate) fn a_shadow_ray_is_blocked_only_before_the_light() {
     // ANCHOR: any_hit
     use ch04_shadows::{Ray, any_hit, scene_files, toolkit::Vec3};
 

@@ -39,7 +39,7 @@ fn read_functions(file: &Path, names: &mut Vec<String>) {
         Some("main" | "mod" | "lib") | None => beside.to_owned(),
         Some(stem) => beside.join(stem),
     };
-    for line in text.lines().map(str::trim) {
+    for line in text.lines().map(str::trim).map(without_visibility) {
         if let Some(name) = line
             .strip_prefix("fn ")
             .and_then(|rest| rest.split('(').next())
@@ -49,6 +49,16 @@ fn read_functions(file: &Path, names: &mut Vec<String>) {
             read_functions(&folder.join(format!("{module}.rs")), names);
         }
     }
+}
+
+/// `line` without a leading `pub`, `pub(crate)` or `pub(super)`: a test
+/// that a snapshot's list of precise tests calls from another module is
+/// `pub(crate) fn`, and keeps its place in the order.
+fn without_visibility(line: &str) -> &str {
+    ["pub(crate) ", "pub(super) ", "pub "]
+        .iter()
+        .find_map(|p| line.strip_prefix(p))
+        .unwrap_or(line)
 }
 
 /// Puts the failed tests and their panics of `output` in the chapter's
@@ -78,12 +88,12 @@ mod tests {
         .unwrap();
         std::fs::write(
             dir.join("chapter06/split.rs"),
-            "fn weights_add_up() {}\nmod short;\n",
+            "pub(crate) fn weights_add_up() {}\nmod short;\n",
         )
         .unwrap();
         // A module of a module: split/short.rs.
         std::fs::create_dir_all(dir.join("chapter06/split")).unwrap();
-        std::fs::write(dir.join("chapter06/split/short.rs"), "fn folds() {}\n").unwrap();
+        std::fs::write(dir.join("chapter06/split/short.rs"), "pub fn folds() {}\n").unwrap();
         let order = test_order(&dir);
         assert_eq!(
             order,
