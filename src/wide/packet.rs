@@ -339,20 +339,19 @@ fn intersect_sphere_ahead(
     intersect_sphere(center, radius, ray, t_min, t_max)
 }
 
-/// Is the sphere of quadratic `q` behind the ray's origin, so that chapter
-/// 2 finds no root beyond t_min ≥ 0 (every ray the tracer casts)?
+/// Is the sphere of `q` behind the ray's origin, so that chapter 2 finds
+/// no root beyond t_min ≥ 0 (every ray the tracer casts)?
 ///
-/// Chapter 2 solves a·t² + b·t + c = 0 with a = rd·rd, b = 2 f·rd,
-/// c = f·f − ρ² (f = r0 − m, in f64). If b > 0 (the ray moves away from
-/// the centre) and c ≥ 0 (the origin is not inside), its
-/// q = −(b + √Δ)/2 is negative, so both of its roots, c/q and q/a, are
-/// ≤ 0 (rounding keeps their signs): neither lies beyond t_min. b and c
-/// are chapter 2's own ([`Quadratic::of`]), so the answer is its answer.
-/// It is the common case of a shadow ray or a mirror ray leaving a
+/// If `along` > 0 (the ray moves away from the centre) and `power` ≥ 0 (the
+/// origin is not inside), chapter 2's q = −(along + √(…)) in
+/// `sphere_roots` is negative, so both of its roots, power/q and q/|rd|²,
+/// are ≤ 0 (rounding keeps their signs): neither lies beyond t_min. The
+/// quantities are chapter 2's own ([`Quadratic::of`]), so the answer is its
+/// answer. It is the common case of a shadow ray or a mirror ray leaving a
 /// sphere, which always meets its own sphere's line.
 #[inline(always)]
 fn behind_origin(q: &Quadratic, t_min: f32) -> bool {
-    t_min >= 0.0 && q.b > 0.0 && q.c >= 0.0
+    t_min >= 0.0 && q.along > 0.0 && q.power >= 0.0
 }
 
 /// Does chapter 2's `intersect_sphere(…, t_min = 0, t_max)` find a hit,
@@ -363,23 +362,28 @@ fn behind_origin(q: &Quadratic, t_min: f32) -> bool {
 /// sphere test was blocked: from inside the glass ball, or from the board
 /// through a ball.
 ///
-/// With chapter 2's a, b, c (`q`, in f64), f·f = |f|² and ρ², and a root t
-/// at the distance t·|rd| = t·√a along the ray:
-/// - **From clearly inside** (c < −2⁻²⁰ρ²): the roots have opposite signs,
-///   so only the far one, where the ray leaves the sphere, can lie in
-///   (0, t_max). That point is at most |f| + ρ away, and (|f| + ρ)² ≤
-///   2(f·f + ρ²). So if a·t_max² > 2(f·f + ρ²)(1 + 2⁻¹⁸), it lies before
-///   t_max.
+/// With chapter 2's quantities (`q`, in f64: f = r0 − m, |f|², ρ², `along`
+/// = f·rd, `power` = |f|² − ρ²), and a root t at the distance t·|rd| along
+/// the ray:
+/// - **From clearly inside** (power < −2⁻²⁰ρ²): the roots have opposite
+///   signs, so only the far one, where the ray leaves the sphere, can lie
+///   in (0, t_max). That point is at most |f| + ρ away, and (|f| + ρ)² ≤
+///   2(|f|² + ρ²). So if |rd|²·t_max² > 2(|f|² + ρ²)(1 + 2⁻¹⁸), it lies
+///   before t_max.
 /// - **From clearly outside, towards the centre, clearly through**
-///   (c > 2⁻²⁰ f·f, b < 0, b² − 4ac > 2⁻³⁰(b² + 4a f·f)): both roots are
-///   positive, and the near one, where the ray enters, is at most |f| away.
-///   So if a·t_max² > f·f (1 + 2⁻¹⁸), it lies before t_max.
+///   (power > 2⁻²⁰|f|², along < 0, and the line's point closest to the
+///   centre clearly inside: along² − |rd|²·power > 2⁻³⁰(along² + |rd|²|f|²),
+///   since along² − |rd|²·power = |rd|²(ρ² − |h|²) with h as in
+///   `sphere_roots`): both roots are positive, and the near one, where the
+///   ray enters, is at most |f| away. So if
+///   |rd|²·t_max² > |f|² (1 + 2⁻¹⁸), it lies before t_max.
 ///
-/// The margins are far wider than chapter 2's rounding: its f, a, b, c and
+/// The margins are far wider than chapter 2's rounding: its quantities and
 /// roots are exact to about 2⁻⁵⁰ of |f|² or ρ² (it works in f64), then
 /// rounded once to f32 (2⁻²⁴). "Clearly" inside or outside keeps the roots
-/// away from 0, so that their signs, and Δ's, are chapter 2's too, and the
-/// lower bounds on f·f and ρ² keep the roots from underflowing in f32.
+/// away from 0, so that their signs, and the discriminant's, are chapter
+/// 2's too, and the lower bounds on |f|² and ρ² keep the roots from
+/// underflowing in f32.
 #[inline(always)]
 fn surely_meets(q: &Quadratic, t_max: f32) -> bool {
     const CLEARLY: f64 = 1.0 / (1u64 << 20) as f64;
@@ -387,18 +391,23 @@ fn surely_meets(q: &Quadratic, t_max: f32) -> bool {
     const THROUGH: f64 = 1.0 / (1u64 << 30) as f64;
     const TINY: f64 = 1e-60;
     let Quadratic {
-        f, rho, a, b, c, ..
+        f,
+        rho,
+        speed2,
+        along,
+        power,
+        ..
     } = *q;
     let (ff, rr) = (f.dot(f), rho * rho);
-    let reach = a * (t_max as f64 * t_max as f64);
+    let reach = speed2 * (t_max as f64 * t_max as f64);
     if ff < TINY || rr < TINY {
         return false;
     }
-    if c < -CLEARLY * rr {
+    if power < -CLEARLY * rr {
         return reach > 2.0 * (ff + rr) * BEYOND;
     }
-    let through = b * b - 4.0 * a * c > THROUGH * (b * b + 4.0 * a * ff);
-    c > CLEARLY * ff && b < 0.0 && through && reach > ff * BEYOND
+    let through = along * along - speed2 * power > THROUGH * (along * along + speed2 * ff);
+    power > CLEARLY * ff && along < 0.0 && through && reach > ff * BEYOND
 }
 
 /// What the four-lane triangle test found.

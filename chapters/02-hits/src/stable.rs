@@ -14,25 +14,25 @@ use crate::toolkit::{DVec3, Vec3};
 /// so that they stay right for a small sphere far away and for a huge sphere
 /// close by. The tracer uses this one.
 ///
-/// With the lecture's f, a, b, c and Δ (README, *The lecture's quadratic*),
-/// both steps of the lecture's formula lose their digits to cancellation in
-/// f32 (README, *When the numbers get hard: the stable quadratic*):
-/// * The discriminant subtracts two nearly equal large numbers when the
-///   sphere is far away and small (both close to 4·distance²). The same
-///   number, without that subtraction: Δ = 4a·(ρ² − |h|²), where
-///   h = f − (b / 2a)·rd goes from the centre to the point of the ray's line
-///   closest to it.
-/// * For one of the two signs, the roots' numerator subtracts nearly equal
-///   numbers. We compute the root without cancellation, t₁ = q/a with
-///   q = −(b + sign(b)·√Δ) / 2, and get the other from the product of the
-///   roots, t₀·t₁ = c/a: t₀ = c/q.
+/// Both steps of the lecture's formula lose their digits to cancellation
+/// in f32 (README, *When the numbers get hard: the stable quadratic*), so
+/// this one is computed from the geometric quantities of [`Quadratic`]:
+/// * Whether the line meets the sphere: the lecture's discriminant
+///   subtracts two nearly equal large numbers when the sphere is far away
+///   and small. The same sign comes from ρ² − |h|², where h goes from the
+///   centre to the point of the ray's line closest to it: the line meets
+///   the sphere when that point is inside. Both are small, so nothing large
+///   cancels.
+/// * Where: of the two roots, the one farther from the origin's side is
+///   computed without cancellation (q / |rd|²), and the other from the
+///   product of the two roots (`power` / |rd|²): it is `power` / q.
 ///
 /// (Haines, Günther and Akenine-Möller, "Precision Improvements for
 /// Ray/Sphere Intersection", Ray Tracing Gems, chapter 7.)
 ///
 /// The formula is evaluated in f64, because f32 cannot even hold the
 /// differences it starts from: 10⁴ units from the origin f32 steps by about
-/// 10⁻³, so f, b and c would be off by a tenth of a sphere of radius 0.01,
+/// 10⁻³, so f, `along` and `power` would be off by a tenth of a sphere of radius 0.01,
 /// or of a gap of 0.01 between the ray's origin and a huge sphere. In f64
 /// every f32 input and every product of two of them is exact, f nearly so,
 /// and the stable formula keeps that precision to the end.
@@ -41,33 +41,49 @@ pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> 
         f,
         rd,
         rho,
-        a,
-        b,
-        c,
+        speed2,
+        along,
+        power,
     } = Quadratic::of(center, radius, ray);
-    let h = f - (b / (2.0 * a)) * rd;
-    let discriminant = 4.0 * a * (rho * rho - h.dot(h));
-    if discriminant < 0.0 {
+    // h: from the centre to the line's point closest to it.
+    let h = f - (along / speed2) * rd;
+    // |rd|² times the squared half chord ρ² − |h|²: ≥ 0 when that point is
+    // inside, and nothing large cancels.
+    let half_chord2 = speed2 * (rho * rho - h.dot(h));
+    if half_chord2 < 0.0 {
         return None;
     }
-    // For b = 0 and Δ = 0 (a tangent line from a point on the sphere), q = 0
-    // and c/q is 0/0: min and max drop that NaN and keep the double root 0.
-    let q = -(b + discriminant.sqrt().copysign(b)) / 2.0;
-    let (t0, t1) = ((c / q) as f32, (q / a) as f32);
+    // For along = 0 and Δ = 0 (a tangent line from a point on the sphere),
+    // q = 0 and power/q is 0/0: min and max drop that NaN and keep the
+    // double root 0.
+    let q = -(along + half_chord2.sqrt().copysign(along));
+    let (t0, t1) = ((power / q) as f32, (q / speed2) as f32);
     Some((t0.min(t1), t0.max(t1)))
 }
 
-/// The quadratic a·t² + b·t + c = 0 of a ray's line and a sphere, in f64,
-/// as [`sphere_roots`] solves it: the lecture's f, rd, ρ and coefficients
-/// a, b, c (README, *The lecture's quadratic*).
+/// The ray's line and a sphere, in f64, in the quantities [`sphere_roots`]
+/// solves from. They are geometric ones, not the lecture's coefficients:
+/// working out a, b, c from the line and the sphere is the exercise
+/// (README, *The lecture's quadratic*), and how each relates to these is a
+/// good check of it.
+///
+/// * `f` = r0 − m, from the centre to the ray's origin; `rd` the direction
+///   and `rho` = ρ, all in f64.
+/// * `speed2` = |rd|², the squared length of the direction (1 up to
+///   rounding).
+/// * `along` = f·rd: negative while the ray still moves towards the
+///   centre, positive once it moves away from it.
+/// * `power` = |f|² − ρ², the power of the origin with respect to the
+///   sphere: negative inside, 0 on the sphere, positive outside. It is
+///   |rd|² times the product of the two roots.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Quadratic {
     pub f: DVec3,
     pub rd: DVec3,
     pub rho: f64,
-    pub a: f64,
-    pub b: f64,
-    pub c: f64,
+    pub speed2: f64,
+    pub along: f64,
+    pub power: f64,
 }
 
 impl Quadratic {
@@ -75,14 +91,13 @@ impl Quadratic {
         let f = ray.origin.as_dvec3() - center.as_dvec3();
         let rd = ray.direction.as_dvec3();
         let rho = radius as f64;
-        let (a, b, c) = (rd.dot(rd), 2.0 * f.dot(rd), f.dot(f) - rho * rho);
         Quadratic {
             f,
             rd,
             rho,
-            a,
-            b,
-            c,
+            speed2: rd.dot(rd),
+            along: f.dot(rd),
+            power: f.dot(f) - rho * rho,
         }
     }
 }

@@ -14,8 +14,8 @@ pub(crate) fn the_lectures_worked_example() {
     assert_eq!(
         roots,
         Some((1.0, 3.0)),
-        "t² − 4t + 3 = 0 (a = rd·rd = 1, b = 2 (r0 − m)·rd = −4, c = |r0 − m|² − ρ² = 3) \
-         has the roots 1 and 3, nearest first"
+        "this ray's quadratic is t² − 4t + 3 = 0 (a = 1, b = −4, c = 3: check yours on paper), \
+         with the roots 1 and 3, nearest first"
     );
     let (t0, t1) = roots.unwrap();
     assert_eq!(ray.at(t0), Vec3::new(0.0, 1.0, 0.0), "enters at the top");
