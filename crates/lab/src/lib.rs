@@ -42,6 +42,7 @@
 //! ([`guard`]). Answers carry a content security policy that allows the
 //! page's own script and nothing else.
 
+pub mod accuracy;
 pub mod bench;
 pub mod chapter;
 pub mod guard;

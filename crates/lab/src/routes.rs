@@ -7,6 +7,7 @@ use std::collections::BTreeMap;
 use serde_json::{Value, json};
 use workbook::hint::{HintArgs, hint};
 
+use crate::accuracy;
 use crate::bench::reference_of;
 use crate::chapter::bench_chapter;
 use crate::pixel::{parse_pixel, trees};
@@ -88,6 +89,22 @@ pub fn answer(state: &State, path: &str, query: &str) -> Answer {
             }
         }),
         "/api/hint" => hint_answer(get("id"), get("level")),
+        "/api/accuracy" => Answer::json(&state.accuracy.snapshot()),
+        "/api/accuracy/study" => match accuracy::study(&state.root) {
+            Ok(study) => Answer::json(&study),
+            Err(e) => Answer::error(500, e),
+        },
+        "/api/accuracy/run" => match accuracy::Settings::parse(get) {
+            Ok(settings) => match state.accuracy.start(&state.root, settings) {
+                Ok(()) => Answer::json(&json!({"asked": settings.name()})),
+                Err(e) => Answer::error(409, e),
+            },
+            Err(e) => Answer::error(400, e),
+        },
+        "/api/accuracy/picture.png" => match state.accuracy.picture() {
+            Some(bytes) => Answer::ok("image/png", bytes),
+            None => Answer::not_found(),
+        },
         _ => picture(state, path),
     }
 }

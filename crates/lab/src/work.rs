@@ -38,6 +38,8 @@ struct Inner {
 /// The lab's state and the queues of its workers.
 pub struct State {
     pub root: PathBuf,
+    /// Chapter 7's accuracy page: its renders, on threads of their own.
+    pub accuracy: crate::accuracy::Runs,
     inner: Mutex<Inner>,
     benches: Sender<(String, Option<Instant>)>,
     tests: Sender<Option<PathBuf>>,
@@ -51,6 +53,7 @@ impl State {
         let (tests, test_jobs) = mpsc::channel();
         let state = Arc::new(State {
             root,
+            accuracy: Default::default(),
             inner: Mutex::default(),
             benches,
             tests,
