@@ -60,6 +60,8 @@ function showExercises(row) {
   for (const exercise of row.exercise_list) {
     const item = el("li", {}, el("span", { class: exercise.open ? "open" : "written" }, exercise.open ? "○ " : "✓ "), exercise.id, " ");
     for (const level of [1, 2, 3]) item.append(el("button", { onclick: () => hint(exercise.id, level), title: ["", "a nudge: what to compute", "the text that derives it", "the tests that check it (runs them)"][level] }, `hint ${level}`));
+    // The answer, only once `workbook hint` offers it: after an attempt that compiles.
+    if (exercise.answer) item.append(el("button", { class: "answer", onclick: () => hint(exercise.id, 4), title: "the answer, to compare with your attempt (runs the tests)" }, "answer"));
     list.append(item);
   }
   box.append(list);
@@ -68,9 +70,9 @@ function showExercises(row) {
 async function hint(id, level) {
   const box = document.getElementById("hint");
   box.hidden = false;
-  document.getElementById("hint-title").textContent = `hint ${level} of 3: ${id}`;
+  document.getElementById("hint-title").textContent = level === 4 ? `the answer to ${id}` : `hint ${level} of 3: ${id}`;
   const text = document.getElementById("hint-text");
-  text.textContent = level === 3 ? "running the chapter's tests…" : "…";
+  text.textContent = level >= 3 ? "running the chapter's tests…" : "…";
   const answer = await getJson(`api/hint?id=${encodeURIComponent(id)}&level=${level}`);
   text.textContent = answer.error ? `error: ${answer.error}` : answer.text;
 }
@@ -84,6 +86,7 @@ async function choose(folder, byHand) {
   lab.benchKey = null;
   if (lab.state && lab.state.rows) showChapters(lab.state.rows);
   location.hash = folder;
+  if (typeof showAccuracy === "function") showAccuracy(folder);
   const answer = await getJson(`api/bench?chapter=${encodeURIComponent(folder)}`);
   if (answer.error) message([answer.error], "error");
   refresh(true);

@@ -11,6 +11,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::Instant;
 
 use serde_json::{Value, json};
+use workbook::hint::offered;
 use workbook::progress::{self, ChapterResult, ProgressArgs};
 
 use crate::bench::{self, Bench, Pictures};
@@ -255,8 +256,13 @@ fn rows(results: &[ChapterResult], root: &Path) -> Value {
             let next = r.next_exercise(root).map(|(file, line, region)| {
                 json!({"id": region.id, "file": file, "line": line, "hint": region.hint})
             });
+            // The answer (hint level 4) is offered as `workbook hint` offers
+            // it: after an attempt that compiles (`hint::offered`).
+            let answer = |region| output.is_some_and(|o| offered(region, o).is_ok());
             let exercises: Vec<Value> = (r.exercises.iter())
-                .map(|(_, _, region)| json!({"id": region.id, "open": region.is_open()}))
+                .map(|(_, _, region)| {
+                    json!({"id": region.id, "open": region.is_open(), "answer": answer(region)})
+                })
                 .collect();
             json!({
                 "folder": r.chapter.folder,
