@@ -25,6 +25,7 @@ function showAccuracy(folder) {
     getJson("api/accuracy/study").then((study) => { accuracy.study = study; drawPlots(); });
   }
   pollAccuracy();
+  if (lab.scrollToAccuracy) { lab.scrollToAccuracy = false; section.scrollIntoView(); }
 }
 
 function accuracyQuery() {
@@ -112,6 +113,22 @@ function drawPlots() {
   plot("accuracy-time", "seconds to render", (r) => r.seconds_median, (p) => p.seconds, curves, chosen, points);
 }
 
+// Ticks at 1, 2 and 5 times the powers of ten between 10^lo and 10^hi.
+function ticks(lo, hi) {
+  const out = [];
+  for (let e = Math.floor(lo); e <= Math.ceil(hi); e++) {
+    for (const m of [1, 2, 5]) {
+      const v = m * 10 ** e;
+      if (Math.log10(v) >= lo && Math.log10(v) <= hi) out.push(v);
+    }
+  }
+  return out;
+}
+
+function tickText(v) {
+  return v >= 1e4 || v < 1e-3 ? v.toExponential(0).replace("e+", "e") : String(Number(v.toPrecision(1)));
+}
+
 // A log-log plot of RMSE against `x` into the <svg> `id`.
 function plot(id, xLabel, studyX, pointX, curves, chosen, points) {
   const svg = document.getElementById(id);
@@ -122,19 +139,20 @@ function plot(id, xLabel, studyX, pointX, curves, chosen, points) {
   for (const p of points) all.push([pointX(p), p.rmse]);
   const valid = all.filter(([x, y]) => x > 0 && y > 0);
   if (!valid.length) { svg.append(svgEl("text", { x: 20, y: 40 }, "no study and no point yet")); return; }
-  const decade = (values, f) => f(Math.log10(f === Math.min ? Math.min(...values) : Math.max(...values)));
-  const [x0, x1] = [decade(valid.map((v) => v[0]), Math.min), decade(valid.map((v) => v[0]), Math.max)];
-  const [y0, y1] = [decade(valid.map((v) => v[1]), Math.min), decade(valid.map((v) => v[1]), Math.max)];
-  const lx = (x) => left + (W - left - right) * (Math.log10(x) - Math.floor(x0)) / Math.max(1, Math.ceil(x1) - Math.floor(x0));
-  const ly = (y) => H - bottom - (H - top - bottom) * (Math.log10(y) - Math.floor(y0)) / Math.max(1, Math.ceil(y1) - Math.floor(y0));
+  // The range of the values, a little wider, in decades (log10).
+  const range = (values) => [Math.log10(Math.min(...values)) - 0.1, Math.log10(Math.max(...values)) + 0.1];
+  const [x0, x1] = range(valid.map((v) => v[0]));
+  const [y0, y1] = range(valid.map((v) => v[1]));
+  const lx = (x) => left + (W - left - right) * (Math.log10(x) - x0) / (x1 - x0);
+  const ly = (y) => H - bottom - (H - top - bottom) * (Math.log10(y) - y0) / (y1 - y0);
   const grid = svgEl("g", { class: "axes" });
-  for (let e = Math.floor(x0); e <= Math.ceil(x1); e++) {
-    grid.append(svgEl("line", { x1: lx(10 ** e), x2: lx(10 ** e), y1: top, y2: H - bottom }));
-    grid.append(svgEl("text", { x: lx(10 ** e), y: H - bottom + 14, "text-anchor": "middle" }, `1e${e}`));
+  for (const v of ticks(x0, x1)) {
+    grid.append(svgEl("line", { x1: lx(v), x2: lx(v), y1: top, y2: H - bottom }));
+    grid.append(svgEl("text", { x: lx(v), y: H - bottom + 14, "text-anchor": "middle" }, tickText(v)));
   }
-  for (let e = Math.floor(y0); e <= Math.ceil(y1); e++) {
-    grid.append(svgEl("line", { x1: left, x2: W - right, y1: ly(10 ** e), y2: ly(10 ** e) }));
-    grid.append(svgEl("text", { x: left - 4, y: ly(10 ** e) + 4, "text-anchor": "end" }, `1e${e}`));
+  for (const v of ticks(y0, y1)) {
+    grid.append(svgEl("line", { x1: left, x2: W - right, y1: ly(v), y2: ly(v) }));
+    grid.append(svgEl("text", { x: left - 4, y: ly(v) + 4, "text-anchor": "end" }, tickText(v)));
   }
   grid.append(svgEl("text", { x: (left + W - right) / 2, y: H - 6, "text-anchor": "middle" }, xLabel));
   grid.append(svgEl("text", { x: 12, y: (top + H - bottom) / 2, "text-anchor": "middle", transform: `rotate(-90 12 ${(top + H - bottom) / 2})` }, "RMSE (linear)"));

@@ -4,7 +4,8 @@
 "use strict";
 
 const WIDTH = 160, HEIGHT = 120;
-const lab = { version: -1, chapter: null, chosen: false, pixel: null, state: null, benchKey: null, lastShown: undefined };
+// An address ending in #07-termination/accuracy opens chapter 7 scrolled to its accuracy page.
+const lab = { scrollToAccuracy: location.hash.endsWith("/accuracy"), version: -1, chapter: null, chosen: false, pixel: null, state: null, benchKey: null, lastShown: undefined };
 
 function el(tag, attrs, ...children) {
   const node = document.createElement(tag);
@@ -305,7 +306,7 @@ async function refresh(force) {
 async function start() {
   const chapters = await getJson("api/chapters");
   if (Array.isArray(chapters)) showChapters(chapters.map((c) => ({ folder: c.folder })));
-  const wanted = decodeURIComponent(location.hash.slice(1));
+  const wanted = decodeURIComponent(location.hash.slice(1)).split("/")[0];
   if (wanted && Array.isArray(chapters) && chapters.some((c) => c.folder === wanted)) await choose(wanted, true);
   await refresh(true);
   setInterval(refresh, 700);
