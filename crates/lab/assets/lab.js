@@ -191,8 +191,10 @@ function showTrees(answer) {
   const all = document.getElementById("all-fields").checked;
   drawTree("tree-yours", all || !answer.yours_short ? answer.yours : { tree: answer.yours_short }, difference);
   drawTree("tree-reference", answer.reference, difference);
-  if (answer.svg) { svg.src = "data:image/svg+xml;charset=utf-8," + encodeURIComponent(answer.svg); document.getElementById("svg-box").hidden = false; }
-  else document.getElementById("svg-box").hidden = true;
+  const drawn = (img, text) => { img.hidden = !text; if (text) img.src = "data:image/svg+xml;charset=utf-8," + encodeURIComponent(text); };
+  drawn(svg, answer.svg);
+  drawn(document.getElementById("svg-reference"), answer.reference_svg);
+  document.getElementById("svg-box").hidden = !answer.svg && !answer.reference_svg;
 }
 
 function drawTree(id, side, difference) {

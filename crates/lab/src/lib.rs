@@ -47,6 +47,7 @@ pub mod bench;
 pub mod chapter;
 pub mod guard;
 pub mod pixel;
+pub mod reference_svg;
 pub mod routes;
 pub mod work;
 
