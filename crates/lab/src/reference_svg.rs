@@ -20,7 +20,7 @@ pub const NOTE: &str = "The reference's rays, drawn from the facts that travel w
 /// it) of pixel (x, y) of `chapter`'s default scene.
 pub fn reference_svg(root: &Path, chapter: &ChapterEntry, tree: &Value) -> Result<String, String> {
     let path = chapter.default_scene_path();
-    let scene = workbook::workbench::scene_files::load(&root.join(&path))
+    let scene = workbook::workbench::scene_files::load(root.join(&path))
         .map_err(|e| e.to_string())?
         .with_size(SIZE.0, SIZE.1);
     let primary = tree.get("primary").ok_or("the facts hold no primary ray")?;
