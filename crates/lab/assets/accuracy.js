@@ -54,7 +54,10 @@ async function pollAccuracy() {
   button.disabled = !!snapshot.running;
   if (snapshot.running) {
     status.className = "message info busy-line";
-    status.textContent = `your chapter-7 binary renders ${snapshot.running.name}… ${snapshot.running.seconds.toFixed(1)} s`;
+    const doing = snapshot.running.phase === "building"
+      ? "cargo builds your chapter 7 (a file under chapters/ changed), then it renders"
+      : "your chapter-7 binary renders";
+    status.textContent = `${doing} ${snapshot.running.name}… ${snapshot.running.seconds.toFixed(1)} s`;
     clearTimeout(accuracy.polling);
     accuracy.polling = setTimeout(pollAccuracy, 250);
   } else if (snapshot.error) {
@@ -175,5 +178,11 @@ function plot(id, xLabel, studyX, pointX, curves, chosen, points) {
 }
 
 document.getElementById("accuracy-form").addEventListener("submit", renderSetting);
-document.getElementById("accuracy-form").addEventListener("change", drawPlots);
+// The centre ray has no seed: its input is off while "centre" is picked.
+function seedOnlyWhenJittered() {
+  const form = document.getElementById("accuracy-form");
+  form.elements.seed.disabled = form.elements.rays.value === "centre";
+}
+document.getElementById("accuracy-form").addEventListener("change", () => { seedOnlyWhenJittered(); drawPlots(); });
+seedOnlyWhenJittered();
 if (lab.chapter) showAccuracy(lab.chapter);

@@ -193,11 +193,26 @@ pub fn mse(image: &Image, reference: &Image) -> f64 {
 /// build, built first if missing) at the reference's size, into `work`,
 /// and measures it against the reference.
 pub fn measure(root: &Path, settings: &Settings, work: &Path) -> Result<Point, String> {
+    measure_telling(root, settings, work, &|_| {})
+}
+
+/// [`measure`], telling `phase` what it does: `building` (when a file under
+/// `chapters/` is newer than the binary: the point is of the student's
+/// code as it is now), then `rendering`.
+pub fn measure_telling(
+    root: &Path,
+    settings: &Settings,
+    work: &Path,
+    phase: &dyn Fn(&'static str),
+) -> Result<Point, String> {
     let started = Instant::now();
     let entry = chapter::bench_chapter(CHAPTER)?;
-    if !chapter::binary(root, entry).exists() {
-        crate::bench::build(root, entry).map_err(|errors| errors.join("\n"))?;
+    if is_stale(root, &chapter::binary(root, entry)) {
+        phase("building");
+        crate::bench::build(root, entry)
+            .map_err(|errors| format!("your chapter 7 does not build:\n{}", errors.join("\n")))?;
     }
+    phase("rendering");
     let reference = reference(root)?;
     let output = render(root, entry, settings, &reference, work)?;
     let image = std::fs::read(&output.pfm)
@@ -216,6 +231,30 @@ pub fn measure(root: &Path, settings: &Settings, work: &Path) -> Result<Point, S
         seconds: output.seconds,
         wall_seconds: started.elapsed().as_secs_f64(),
     })
+}
+
+/// Is the binary missing, or older than a file under `chapters/` (the
+/// chapter and those it stands on)? A look at modification times, so that
+/// a point of unchanged code does not wait for cargo (nor for its lock,
+/// which `progress` may hold).
+fn is_stale(root: &Path, binary: &Path) -> bool {
+    let Ok(built) = std::fs::metadata(binary).and_then(|m| m.modified()) else {
+        return true;
+    };
+    fn newer(folder: &Path, than: std::time::SystemTime) -> bool {
+        let Ok(entries) = std::fs::read_dir(folder) else {
+            return false;
+        };
+        entries.flatten().any(|entry| match entry.file_type() {
+            Ok(t) if t.is_dir() => newer(&entry.path(), than),
+            Ok(_) => entry
+                .metadata()
+                .and_then(|m| m.modified())
+                .is_ok_and(|m| m > than),
+            Err(_) => false,
+        })
+    }
+    newer(&root.join("chapters"), built)
 }
 
 /// What a render of the page wrote and reported.
@@ -338,6 +377,8 @@ fn csv_fields(line: &str) -> Vec<String> {
 #[derive(Default)]
 struct Inner {
     running: Option<(Settings, Instant)>,
+    /// What the running render does now: `building` or `rendering`.
+    phase: &'static str,
     points: Vec<Point>,
     error: Option<String>,
     /// The latest render's picture, as PNG.
@@ -365,12 +406,14 @@ impl Runs {
                 ));
             }
             inner.running = Some((settings, Instant::now()));
+            inner.phase = "starting";
             inner.error = None;
         }
         let (runs, root) = (self.clone(), root.to_owned());
         std::thread::spawn(move || {
             let work = root.join("target/lab");
-            let measured = measure(&root, &settings, &work);
+            let phase = |now: &'static str| runs.lock().phase = now;
+            let measured = measure_telling(&root, &settings, &work, &phase);
             let picture = std::fs::read(work.join(CHAPTER).join("accuracy.png")).ok();
             let mut inner = runs.lock();
             inner.running = None;
@@ -390,7 +433,11 @@ impl Runs {
     pub fn snapshot(&self) -> Value {
         let inner = self.lock();
         let running = inner.running.as_ref().map(|(settings, since)| {
-            json!({"name": settings.name(), "seconds": since.elapsed().as_secs_f64()})
+            json!({
+                "name": settings.name(),
+                "phase": inner.phase,
+                "seconds": since.elapsed().as_secs_f64(),
+            })
         });
         json!({
             "running": running,
@@ -474,6 +521,26 @@ mod tests {
             csv_fields(r#"grid,1,"lambert, spot",8,"say ""hi""""#),
             ["grid", "1", "lambert, spot", "8", "say \"hi\""]
         );
+    }
+
+    #[test]
+    fn a_binary_older_than_a_chapter_file_is_built_again() {
+        let root = std::env::temp_dir().join(format!("lab-stale-{}", std::process::id()));
+        let source = root.join("chapters/07-termination/src/lib.rs");
+        std::fs::create_dir_all(source.parent().unwrap()).unwrap();
+        let binary = root.join("ch07");
+        assert!(is_stale(&root, &binary), "no binary yet");
+        let at = |file: &Path, seconds: u64| {
+            let time = std::time::UNIX_EPOCH + Duration::from_secs(seconds);
+            let file = std::fs::File::create(file).unwrap();
+            file.set_modified(time).unwrap();
+        };
+        at(&source, 1_000);
+        at(&binary, 2_000);
+        assert!(!is_stale(&root, &binary), "built after the last edit");
+        at(&source, 3_000);
+        assert!(is_stale(&root, &binary), "edited since");
+        std::fs::remove_dir_all(&root).unwrap();
     }
 
     #[test]
