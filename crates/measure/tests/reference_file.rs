@@ -5,6 +5,8 @@
 //! Remade with `cargo run --release -- accuracy --quick --reference-only
 //! --out chapters/07-termination/accuracy`.
 
+mod common;
+
 use measure::accuracy::{Plan, REFERENCE_PFM_GZ, read_pfm_gz};
 use raybook::tracer::Termination;
 use raybook::workbench::snapshot::workspace_root;
@@ -30,4 +32,41 @@ fn the_carried_reference_is_the_quick_studys_picture() {
         linear.pixels.iter().filter(|c| steps(c.y) > 0.01).count() > linear.pixels.len() / 2,
         "linear values between the 8-bit steps, not the PNG read back"
     );
+}
+
+#[test]
+fn reference_only_writes_the_reference_and_no_study() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = [
+        "accuracy",
+        "--quick",
+        "--reference-only",
+        "--width",
+        "8",
+        "--height",
+        "6",
+        "--out",
+        "out",
+        "--cache",
+        "cache",
+    ];
+    let run = common::raybook(dir.path(), &args);
+    assert!(run.success, "{}", run.stderr);
+    assert!(run.stdout.contains("made in"), "{}", run.stdout);
+    let out = dir.path().join("out");
+    let mut names: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["reference.pfm.gz", "reference.png"], "no study");
+    let linear = read_pfm_gz(&out.join(REFERENCE_PFM_GZ)).unwrap();
+    assert_eq!((linear.width, linear.height), (8, 6));
+    let png = image::open(out.join("reference.png")).unwrap().to_rgb8();
+    assert_eq!(linear.to_rgb8(), png);
+    // Again: read from the cache, the same bytes.
+    let first = std::fs::read(out.join(REFERENCE_PFM_GZ)).unwrap();
+    let again = common::raybook(dir.path(), &args);
+    assert!(again.stdout.contains("read from"), "{}", again.stdout);
+    assert_eq!(std::fs::read(out.join(REFERENCE_PFM_GZ)).unwrap(), first);
 }
