@@ -16,15 +16,19 @@
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
 use serde::Serialize;
-use serde_json::{Value, json};
 use workbook::toolkit::{Color, Image};
 use workbook::workbench::chapters::ChapterEntry;
 
 use crate::chapter;
+
+mod runs;
+mod study;
+
+pub use runs::Runs;
+pub use study::study;
 
 /// The chapter whose page this is.
 pub const CHAPTER: &str = "07-termination";
@@ -310,149 +314,6 @@ fn reported(stdout: &str) -> Option<(u64, f64)> {
     Some((rays, seconds))
 }
 
-/// The study's rows, from its `accuracy.csv`: each grid row's setting, its
-/// rays, its median time and its √MSE (the mean MSE over its seeds).
-pub fn study(root: &Path) -> Result<Value, String> {
-    let path = root.join(STUDY).join("accuracy.csv");
-    let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let mut lines = text.lines();
-    let header = csv_fields(lines.next().unwrap_or(""));
-    let column = |name: &str| {
-        (header.iter().position(|h| h == name))
-            .ok_or_else(|| format!("{}: no column {name:?}", path.display()))
-    };
-    let wanted = [
-        "group",
-        "max_depth",
-        "min_weight",
-        "sampling",
-        "samples",
-        "rays",
-        "seconds_median",
-        "mse",
-    ];
-    let columns = wanted.map(column);
-    let mut rows = Vec::new();
-    for line in lines.filter(|l| !l.trim().is_empty()) {
-        let fields = csv_fields(line);
-        let mut row = serde_json::Map::new();
-        for (name, index) in wanted.iter().zip(&columns) {
-            let field = fields.get(*index.as_ref().map_err(Clone::clone)?);
-            let field = field.map(String::as_str).unwrap_or("");
-            let value = match field.parse::<f64>() {
-                Ok(number) => json!(number),
-                Err(_) => json!(field),
-            };
-            row.insert((*name).to_owned(), value);
-        }
-        let mse = row.get("mse").and_then(Value::as_f64).unwrap_or(f64::NAN);
-        row.insert("rmse".into(), json!(mse.sqrt()));
-        rows.push(Value::Object(row));
-    }
-    Ok(json!({"file": path.strip_prefix(root).unwrap_or(&path), "rows": rows}))
-}
-
-/// The fields of one CSV line (RFC 4180: a field in double quotes may hold
-/// commas, and `""` inside it is one quote).
-fn csv_fields(line: &str) -> Vec<String> {
-    let mut fields = vec![String::new()];
-    let mut quoted = false;
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        let field = fields.last_mut().expect("one field at least");
-        match (c, quoted) {
-            ('"', true) if chars.peek() == Some(&'"') => {
-                field.push('"');
-                chars.next();
-            }
-            ('"', _) => quoted = !quoted,
-            (',', false) => fields.push(String::new()),
-            _ => field.push(c),
-        }
-    }
-    fields
-}
-
-/// The page's renders: the one running, and the points measured.
-#[derive(Default)]
-struct Inner {
-    running: Option<(Settings, Instant)>,
-    /// What the running render does now: `building` or `rendering`.
-    phase: &'static str,
-    points: Vec<Point>,
-    error: Option<String>,
-    /// The latest render's picture, as PNG.
-    picture: Option<Vec<u8>>,
-}
-
-/// The page's renders, shared with the thread that runs them.
-#[derive(Clone, Default)]
-pub struct Runs(Arc<Mutex<Inner>>);
-
-impl Runs {
-    fn lock(&self) -> MutexGuard<'_, Inner> {
-        self.0.lock().unwrap_or_else(|e| e.into_inner())
-    }
-
-    /// Starts a render of `settings` on a thread of its own, unless one
-    /// runs: then Err says so.
-    pub fn start(&self, root: &Path, settings: Settings) -> Result<(), String> {
-        {
-            let mut inner = self.lock();
-            if let Some((running, _)) = &inner.running {
-                return Err(format!(
-                    "a render runs already ({}); wait for it",
-                    running.name()
-                ));
-            }
-            inner.running = Some((settings, Instant::now()));
-            inner.phase = "starting";
-            inner.error = None;
-        }
-        let (runs, root) = (self.clone(), root.to_owned());
-        std::thread::spawn(move || {
-            let work = root.join("target/lab");
-            let phase = |now: &'static str| runs.lock().phase = now;
-            let measured = measure_telling(&root, &settings, &work, &phase);
-            let picture = std::fs::read(work.join(CHAPTER).join("accuracy.png")).ok();
-            let mut inner = runs.lock();
-            inner.running = None;
-            match measured {
-                Ok(point) => {
-                    inner.points.push(point);
-                    inner.picture = picture;
-                }
-                Err(e) => inner.error = Some(e),
-            }
-        });
-        Ok(())
-    }
-
-    /// What the page shows: the render running (and for how long), the
-    /// points, the last error.
-    pub fn snapshot(&self) -> Value {
-        let inner = self.lock();
-        let running = inner.running.as_ref().map(|(settings, since)| {
-            json!({
-                "name": settings.name(),
-                "phase": inner.phase,
-                "seconds": since.elapsed().as_secs_f64(),
-            })
-        });
-        json!({
-            "running": running,
-            "points": inner.points,
-            "error": inner.error,
-            "picture": inner.picture.is_some(),
-        })
-    }
-
-    /// The latest render's picture.
-    pub fn picture(&self) -> Option<Vec<u8>> {
-        self.lock().picture.clone()
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -513,14 +374,6 @@ mod tests {
                       29062 rays: 12288 primary, 1 shadow\npaths ended: 3 by no hit\n";
         assert_eq!(reported(stdout), Some((29062, 0.125)));
         assert_eq!(reported("nothing"), None);
-    }
-
-    #[test]
-    fn quoted_csv_fields_keep_their_commas() {
-        assert_eq!(
-            csv_fields(r#"grid,1,"lambert, spot",8,"say ""hi""""#),
-            ["grid", "1", "lambert, spot", "8", "say \"hi\""]
-        );
     }
 
     #[test]
