@@ -4,7 +4,8 @@
 "use strict";
 
 const WIDTH = 160, HEIGHT = 120;
-const lab = { version: -1, chapter: null, chosen: false, pixel: null, state: null, benchKey: null, lastShown: undefined };
+// An address ending in #07-termination/accuracy opens chapter 7 scrolled to its accuracy page.
+const lab = { scrollToAccuracy: location.hash.endsWith("/accuracy"), version: -1, chapter: null, chosen: false, pixel: null, state: null, benchKey: null, lastShown: undefined };
 
 function el(tag, attrs, ...children) {
   const node = document.createElement(tag);
@@ -60,6 +61,8 @@ function showExercises(row) {
   for (const exercise of row.exercise_list) {
     const item = el("li", {}, el("span", { class: exercise.open ? "open" : "written" }, exercise.open ? "○ " : "✓ "), exercise.id, " ");
     for (const level of [1, 2, 3]) item.append(el("button", { onclick: () => hint(exercise.id, level), title: ["", "a nudge: what to compute", "the text that derives it", "the tests that check it (runs them)"][level] }, `hint ${level}`));
+    // The answer, only once `workbook hint` offers it: after an attempt that compiles.
+    if (exercise.answer) item.append(el("button", { class: "answer", onclick: () => hint(exercise.id, 4), title: "the answer, to compare with your attempt (runs the tests)" }, "answer"));
     list.append(item);
   }
   box.append(list);
@@ -68,9 +71,9 @@ function showExercises(row) {
 async function hint(id, level) {
   const box = document.getElementById("hint");
   box.hidden = false;
-  document.getElementById("hint-title").textContent = `hint ${level} of 3: ${id}`;
+  document.getElementById("hint-title").textContent = level === 4 ? `the answer to ${id}` : `hint ${level} of 3: ${id}`;
   const text = document.getElementById("hint-text");
-  text.textContent = level === 3 ? "running the chapter's tests…" : "…";
+  text.textContent = level >= 3 ? "running the chapter's tests…" : "…";
   const answer = await getJson(`api/hint?id=${encodeURIComponent(id)}&level=${level}`);
   text.textContent = answer.error ? `error: ${answer.error}` : answer.text;
 }
@@ -84,6 +87,7 @@ async function choose(folder, byHand) {
   lab.benchKey = null;
   if (lab.state && lab.state.rows) showChapters(lab.state.rows);
   location.hash = folder;
+  if (typeof showAccuracy === "function") showAccuracy(folder);
   const answer = await getJson(`api/bench?chapter=${encodeURIComponent(folder)}`);
   if (answer.error) message([answer.error], "error");
   refresh(true);
@@ -187,8 +191,10 @@ function showTrees(answer) {
   const all = document.getElementById("all-fields").checked;
   drawTree("tree-yours", all || !answer.yours_short ? answer.yours : { tree: answer.yours_short }, difference);
   drawTree("tree-reference", answer.reference, difference);
-  if (answer.svg) { svg.src = "data:image/svg+xml;charset=utf-8," + encodeURIComponent(answer.svg); document.getElementById("svg-box").hidden = false; }
-  else document.getElementById("svg-box").hidden = true;
+  const drawn = (img, text) => { img.hidden = !text; if (text) img.src = "data:image/svg+xml;charset=utf-8," + encodeURIComponent(text); };
+  drawn(svg, answer.svg);
+  drawn(document.getElementById("svg-reference"), answer.reference_svg);
+  document.getElementById("svg-box").hidden = !answer.svg && !answer.reference_svg;
 }
 
 function drawTree(id, side, difference) {
@@ -302,7 +308,7 @@ async function refresh(force) {
 async function start() {
   const chapters = await getJson("api/chapters");
   if (Array.isArray(chapters)) showChapters(chapters.map((c) => ({ folder: c.folder })));
-  const wanted = decodeURIComponent(location.hash.slice(1));
+  const wanted = decodeURIComponent(location.hash.slice(1)).split("/")[0];
   if (wanted && Array.isArray(chapters) && chapters.some((c) => c.folder === wanted)) await choose(wanted, true);
   await refresh(true);
   setInterval(refresh, 700);

@@ -52,6 +52,22 @@ pub const PATIENCE: Duration = Duration::from_secs(60);
 /// (with the arguments of its reference picture) and `extra` arguments;
 /// stopped after [`PATIENCE`].
 pub fn run(root: &Path, chapter: &ChapterEntry, extra: &[&str]) -> Result<Output, String> {
+    let (width, height) = (SIZE.0.to_string(), SIZE.1.to_string());
+    let mut args = vec!["--width", &width, "--height", &height, "--quiet"];
+    let reference = chapter.verify.as_ref().map(|v| v.args.as_slice());
+    args.extend(reference.unwrap_or_default().iter().map(String::as_str));
+    args.extend(extra);
+    run_with(root, chapter, &args, PATIENCE)
+}
+
+/// Runs the chapter's binary with exactly `args` (in `root`), stopped
+/// after `patience`.
+pub fn run_with(
+    root: &Path,
+    chapter: &ChapterEntry,
+    args: &[&str],
+    patience: Duration,
+) -> Result<Output, String> {
     let binary = binary(root, chapter);
     if !binary.exists() {
         return Err(format!(
@@ -60,13 +76,8 @@ pub fn run(root: &Path, chapter: &ChapterEntry, extra: &[&str]) -> Result<Output
             binary.display()
         ));
     }
-    let (width, height) = (SIZE.0.to_string(), SIZE.1.to_string());
-    let mut args = vec!["--width", &width, "--height", &height, "--quiet"];
-    let reference = chapter.verify.as_ref().map(|v| v.args.as_slice());
-    args.extend(reference.unwrap_or_default().iter().map(String::as_str));
-    args.extend(extra);
     let mut child = Command::new(&binary)
-        .args(&args)
+        .args(args)
         .current_dir(root)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
@@ -78,13 +89,13 @@ pub fn run(root: &Path, chapter: &ChapterEntry, extra: &[&str]) -> Result<Output
     let status = loop {
         match child.try_wait() {
             Ok(Some(status)) => break status,
-            Ok(None) if started.elapsed() > PATIENCE => {
+            Ok(None) if started.elapsed() > patience => {
                 let _ = child.kill();
                 let _ = child.wait();
                 return Err(format!(
                     "chapter {}'s binary ran for more than {} s and was stopped: does a loop of yours never end?",
                     chapter.folder,
-                    PATIENCE.as_secs()
+                    patience.as_secs()
                 ));
             }
             Ok(None) => std::thread::sleep(Duration::from_millis(2)),

@@ -13,6 +13,11 @@
 //!   --json` beside the reference's from the facts committed beside the
 //!   snapshots (`workbook::verify::tree::facts`), the first difference
 //!   highlighted as `verify --tree` finds it;
+//! * on chapter 7's bench, what accuracy costs, live ([`accuracy`]): the
+//!   student's chapter-7 binary renders a depth, threshold, rays per pixel
+//!   and seed in the background, and the page plots its error against the
+//!   carried reference (the study's MSE), its rays and its time beside the
+//!   study's curves from `accuracy.csv`;
 //! * live: a save under `chapters/` rebuilds and renders the edited chapter
 //!   and runs progress again; the page polls and updates by itself.
 //!
@@ -42,10 +47,12 @@
 //! ([`guard`]). Answers carry a content security policy that allows the
 //! page's own script and nothing else.
 
+pub mod accuracy;
 pub mod bench;
 pub mod chapter;
 pub mod guard;
 pub mod pixel;
+pub mod reference_svg;
 pub mod routes;
 pub mod work;
 

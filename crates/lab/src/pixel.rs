@@ -38,7 +38,7 @@ pub fn parse_pixel(x: Option<&str>, y: Option<&str>) -> Result<(u32, u32), Strin
 }
 
 /// The reference's facts of a chapter, read once.
-fn facts_of(folder: &str) -> Result<Arc<Facts>, String> {
+pub(crate) fn facts_of(folder: &str) -> Result<Arc<Facts>, String> {
     static READ: OnceLock<Mutex<BTreeMap<String, Arc<Facts>>>> = OnceLock::new();
     let read = READ.get_or_init(Default::default);
     let mut read = read.lock().map_err(|_| "the facts' cache broke")?;
@@ -91,8 +91,13 @@ pub fn trees(root: &Path, chapter: &ChapterEntry, (x, y): (u32, u32)) -> Value {
     let _ = std::fs::remove_file(&svg);
     // The student's tree cut as the reference's is, so that the two line up.
     let yours_short = yours.as_ref().ok().map(facts::shorten);
+    let reference_svg = match &reference {
+        Ok(tree) => crate::reference_svg::reference_svg(root, chapter, tree),
+        Err(e) => Err(e.clone()),
+    };
     json!({
         "chapter": chapter.folder,
+        "reference_svg": reference_svg.ok(),
         "pixel": [x, y],
         "yours_short": yours_short,
         "yours": result(yours),

@@ -7,6 +7,7 @@ use std::collections::BTreeMap;
 use serde_json::{Value, json};
 use workbook::hint::{HintArgs, hint};
 
+use crate::accuracy;
 use crate::bench::reference_of;
 use crate::chapter::bench_chapter;
 use crate::pixel::{parse_pixel, trees};
@@ -49,6 +50,7 @@ impl Answer {
 const PAGE: &str = include_str!("../assets/index.html");
 const SCRIPT: &str = include_str!("../assets/lab.js");
 const STYLE: &str = include_str!("../assets/lab.css");
+const ACCURACY_SCRIPT: &str = include_str!("../assets/accuracy.js");
 
 /// The query `a=1&b=2` as a map (values percent-decoded; `+` is a space).
 fn query_map(query: &str) -> Result<BTreeMap<String, String>, String> {
@@ -74,6 +76,7 @@ pub fn answer(state: &State, path: &str, query: &str) -> Answer {
     match path {
         "/" => Answer::ok("text/html; charset=utf-8", PAGE),
         "/lab.js" => Answer::ok("text/javascript; charset=utf-8", SCRIPT),
+        "/accuracy.js" => Answer::ok("text/javascript; charset=utf-8", ACCURACY_SCRIPT),
         "/lab.css" => Answer::ok("text/css; charset=utf-8", STYLE),
         "/api/state" => Answer::json(&state.snapshot()),
         "/api/chapters" => Answer::json(&chapters()),
@@ -88,6 +91,22 @@ pub fn answer(state: &State, path: &str, query: &str) -> Answer {
             }
         }),
         "/api/hint" => hint_answer(get("id"), get("level")),
+        "/api/accuracy" => Answer::json(&state.accuracy.snapshot()),
+        "/api/accuracy/study" => match accuracy::study(&state.root) {
+            Ok(study) => Answer::json(&study),
+            Err(e) => Answer::error(500, e),
+        },
+        "/api/accuracy/run" => match accuracy::Settings::parse(get) {
+            Ok(settings) => match state.accuracy.start(&state.root, settings) {
+                Ok(()) => Answer::json(&json!({"asked": settings.name()})),
+                Err(e) => Answer::error(409, e),
+            },
+            Err(e) => Answer::error(400, e),
+        },
+        "/api/accuracy/picture.png" => match state.accuracy.picture() {
+            Some(bytes) => Answer::ok("image/png", bytes),
+            None => Answer::not_found(),
+        },
         _ => picture(state, path),
     }
 }
@@ -112,17 +131,21 @@ fn with_chapter(name: Option<&str>, then: impl FnOnce(&str) -> Answer) -> Answer
     }
 }
 
-/// The workbook's own hint of exercise `id` at `level` (1 to 3).
+/// The workbook's own hint of exercise `id` at `level` (1 to 4: level 4,
+/// the answer, is refused by `hint` itself until the student has tried).
 fn hint_answer(id: Option<&str>, level: Option<&str>) -> Answer {
     let Some(id) = id else {
         return Answer::error(400, "which exercise? add ?id=ch02-sphere");
     };
     let level = match level.unwrap_or("1").parse::<u8>() {
-        Ok(level @ 1..=3) => level,
+        Ok(level @ 1..=4) => level,
         _ => {
             return Answer::error(
                 400,
-                format!("a hint's level is 1, 2 or 3, not {:?}", level.unwrap_or("")),
+                format!(
+                    "a hint's level is 1, 2, 3 or 4 (the answer, after an attempt), not {:?}",
+                    level.unwrap_or("")
+                ),
             );
         }
     };

@@ -11,6 +11,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::Instant;
 
 use serde_json::{Value, json};
+use workbook::hint::offered;
 use workbook::progress::{self, ChapterResult, ProgressArgs};
 
 use crate::bench::{self, Bench, Pictures};
@@ -38,6 +39,8 @@ struct Inner {
 /// The lab's state and the queues of its workers.
 pub struct State {
     pub root: PathBuf,
+    /// Chapter 7's accuracy page: its renders, on threads of their own.
+    pub accuracy: crate::accuracy::Runs,
     inner: Mutex<Inner>,
     benches: Sender<(String, Option<Instant>)>,
     tests: Sender<Option<PathBuf>>,
@@ -51,6 +54,7 @@ impl State {
         let (tests, test_jobs) = mpsc::channel();
         let state = Arc::new(State {
             root,
+            accuracy: Default::default(),
             inner: Mutex::default(),
             benches,
             tests,
@@ -252,8 +256,13 @@ fn rows(results: &[ChapterResult], root: &Path) -> Value {
             let next = r.next_exercise(root).map(|(file, line, region)| {
                 json!({"id": region.id, "file": file, "line": line, "hint": region.hint})
             });
+            // The answer (hint level 4) is offered as `workbook hint` offers
+            // it: after an attempt that compiles (`hint::offered`).
+            let answer = |region| output.is_some_and(|o| offered(region, o).is_ok());
             let exercises: Vec<Value> = (r.exercises.iter())
-                .map(|(_, _, region)| json!({"id": region.id, "open": region.is_open()}))
+                .map(|(_, _, region)| {
+                    json!({"id": region.id, "open": region.is_open(), "answer": answer(region)})
+                })
                 .collect();
             json!({
                 "folder": r.chapter.folder,

@@ -105,6 +105,63 @@ fn a_student_clicks_a_wrong_pixel_and_sees_the_page_follow_the_fix() {
     );
 }
 
+/// Chapter 7's accuracy page in this workspace (chapter 7 solved): a
+/// setting picked in the form and rendered by pressing the button shows
+/// its point, in the table and on both plots beside the study's curves,
+/// with the same RMSE the server measured.
+#[test]
+fn the_accuracy_page_adds_a_rendered_point_to_the_studys_curves() {
+    if std::env::var_os("RAYBOOK_LAB_BROWSER").is_none() {
+        return;
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let root = root.canonicalize().unwrap();
+    let entry = lab::chapter::bench_chapter(lab::accuracy::CHAPTER).unwrap();
+    lab::bench::build(&root, entry).expect("chapter 7 builds");
+    let lab = lab::Lab::start(root, 0, false).expect("the lab starts");
+    lab.serve_in_background();
+    let mut browser = Browser::open(&format!("{}#07-termination", lab.url()));
+    browser.wait_for(
+        "!document.getElementById('accuracy').hidden \
+         && document.querySelectorAll('#accuracy-rays polyline.study').length === 12",
+        Duration::from_secs(60),
+    );
+    browser.eval(
+        "(() => { const f = document.getElementById('accuracy-form'); \
+         f.elements.max_depth.value = '2'; f.elements.min_weight.value = '0.01'; \
+         f.elements.rays.value = '4'; f.elements.seed.disabled = false; f.elements.seed.value = '3'; \
+         document.getElementById('accuracy-render').click(); return true; })()",
+    );
+    browser.wait_for(
+        "document.querySelectorAll('#accuracy-points tbody tr').length === 1 \
+         && document.querySelectorAll('#accuracy-rays circle.yours.last').length === 1 \
+         && document.querySelectorAll('#accuracy-time circle.yours.last').length === 1",
+        Duration::from_secs(120),
+    );
+    let row = browser.eval("document.querySelector('#accuracy-points tbody tr').textContent");
+    let row = row.as_str().unwrap();
+    assert!(
+        row.starts_with("depth 2, threshold 0.01, 4 jittered, seed 3"),
+        "{row}"
+    );
+    let state: Value =
+        serde_json::from_slice(&http_get(&format!("{}api/accuracy", lab.url()))).unwrap();
+    let rmse = state["points"][0]["rmse"].as_f64().unwrap();
+    let shown =
+        browser.eval("document.querySelector('#accuracy-points tbody tr').cells[1].textContent");
+    let shown: f64 = shown.as_str().unwrap().parse().unwrap();
+    assert!(
+        (shown - rmse).abs() < 1e-3 * rmse,
+        "the page shows {shown}, the server measured {rmse}"
+    );
+    let chosen = browser.eval("document.querySelectorAll('#accuracy-rays .study.chosen').length");
+    assert!(
+        chosen.as_u64().unwrap() >= 1,
+        "the study's curve of depth 2, threshold 0.01"
+    );
+    eprintln!("browser: the accuracy page shows {row}");
+}
+
 /// A fresh handout (under the test's temporary folder) with chapters 1
 /// and 2 solved and the sphere's radius not squared.
 fn handout_with_a_mistake() -> PathBuf {
@@ -176,7 +233,11 @@ impl Browser {
             .into_iter()
             .find(|p| Command::new(p).arg("--version").output().is_ok())
             .expect("no chromium: apt-get install -y chromium");
-        let profile = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("lab-browser-profile");
+        // A profile of its own per browser: the two tests run at once.
+        static OPENED: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
+        let n = OPENED.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let profile =
+            PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("lab-browser-profile-{n}"));
         let _ = std::fs::remove_dir_all(&profile);
         // The browser reads commands on fd 3 and writes answers on fd 4.
         let (commands, to) = std::io::pipe().unwrap();

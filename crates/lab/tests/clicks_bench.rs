@@ -2,7 +2,9 @@
 //! both trees and their comparison (the page's `api/pixel`: the student's
 //! binary run with `--pixel X,Y --json --svg`, the reference's facts read,
 //! `verify --tree`'s comparison), and save-to-picture, a chapter built and
-//! rendered again after an edit. A measurement, not a check: it asserts
+//! rendered again after an edit, and request-to-point on chapter 7's
+//! accuracy page (a render asked for, its error against the carried
+//! reference shown). A measurement, not a check: it asserts
 //! nothing about the time and runs only when asked, in this workspace
 //! (where every chapter is solved):
 //!
@@ -66,6 +68,58 @@ fn click_to_trees_and_save_to_picture() {
         "save to picture (build + render + verify), chapter 7",
         &mut times,
     );
+
+    // Request to point on chapter 7's accuracy page: ask for a render, poll
+    // (every 10 ms) until its point is there. Also the binary's own render
+    // time, to say what the rest (starting it, writing and reading the PFM,
+    // the MSE, the polling) costs.
+    let settings = [
+        ("centre", "max_depth=6&min_weight=0.001&rays=centre", 9),
+        (
+            "16 jittered",
+            "max_depth=6&min_weight=0.001&rays=16&seed=1",
+            5,
+        ),
+    ];
+    for (name, query, runs) in settings {
+        let mut times = Vec::new();
+        let mut renders = Vec::new();
+        for _ in 0..runs {
+            let (took, point) = request_to_point(&lab, query);
+            times.push(took);
+            renders.push(Duration::from_secs_f64(point["seconds"].as_f64().unwrap()));
+        }
+        report(&format!("request to point, {name}"), &mut times);
+        report(
+            &format!("  of which the binary's render, {name}"),
+            &mut renders,
+        );
+    }
+}
+
+/// Asks the accuracy page for `query` and waits for its point: the time
+/// and the point.
+fn request_to_point(lab: &lab::Lab, query: &str) -> (Duration, serde_json::Value) {
+    let points = |body: &str| -> serde_json::Value {
+        let json = body.split_once("\r\n\r\n").map_or("", |(_, b)| b);
+        serde_json::from_str(json).unwrap()
+    };
+    let before = points(&get(lab, "api/accuracy"))["points"]
+        .as_array()
+        .unwrap()
+        .len();
+    let start = Instant::now();
+    let asked = get(lab, &format!("api/accuracy/run?{query}"));
+    assert!(asked.contains("\"asked\""), "{asked}");
+    loop {
+        let state = points(&get(lab, "api/accuracy"));
+        let list = state["points"].as_array().unwrap();
+        if list.len() > before {
+            return (start.elapsed(), list[list.len() - 1].clone());
+        }
+        assert!(state["error"].is_null(), "{}", state["error"]);
+        std::thread::sleep(Duration::from_millis(10));
+    }
 }
 
 fn touch(file: &PathBuf) {

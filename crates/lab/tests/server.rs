@@ -130,9 +130,25 @@ fn bad_input_gets_a_clear_error() {
         ("/api/hint?id=ch02-nope", "no exercise \"ch02-nope\""),
         (
             "/api/hint?id=ch02-sphere&level=7",
-            "a hint's level is 1, 2 or 3",
+            "a hint's level is 1, 2, 3 or 4",
         ),
         ("/api/hint?id=%ff", "not valid percent-encoded UTF-8"),
+        (
+            "/api/accuracy/run?max_depth=65&min_weight=0&rays=centre",
+            "maximum depth is a whole number from 0 to 64",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=-1&rays=centre",
+            "weight threshold is a number from 0 to 1",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=0&rays=3&seed=1",
+            "a square number of jittered rays",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=0&rays=4",
+            "the seed is a whole number",
+        ),
     ];
     for (path, expected) in cases {
         let (status, body) = get(&below(path));

@@ -40,6 +40,7 @@ fn render_and_write(args: &RenderArgs) -> Result<(), String> {
     let (image, stats) = rendered(args, &scene)?;
     let seconds = start.elapsed();
     output.write(&image)?;
+    args.write_linear(&image)?;
     let rendered = Rendered {
         image,
         stats,

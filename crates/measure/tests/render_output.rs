@@ -158,3 +158,40 @@ fn the_help_says_which_formats_and_files_it_writes() {
         );
     }
 }
+
+#[test]
+fn linear_writes_the_values_the_png_rounds() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = workspace_root().join("chapters/03-lambert/scenes/default.toml");
+    let args = [
+        "render",
+        scene.to_str().unwrap(),
+        "--width",
+        "8",
+        "--height",
+        "6",
+        "-q",
+        "-o",
+        "out.png",
+        "--linear",
+        "out.pfm",
+    ];
+    let run = raybook(dir.path(), &args);
+    assert!(run.success, "{}", run.stderr);
+    let pfm = std::fs::read(dir.path().join("out.pfm")).unwrap();
+    let linear = raybook::workbench::pfm::decode(&pfm).unwrap();
+    assert_eq!((linear.width, linear.height), (8, 6));
+    let png = image::open(dir.path().join("out.png")).unwrap().to_rgb8();
+    assert_eq!(
+        linear.to_rgb8(),
+        png,
+        "the PNG is the linear values, rounded"
+    );
+    assert!(
+        linear
+            .pixels
+            .iter()
+            .any(|c| c.x != (c.x * 255.0).round() / 255.0),
+        "values between the 8-bit steps: not read back from the PNG"
+    );
+}

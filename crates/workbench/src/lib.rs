@@ -13,6 +13,7 @@ pub mod cli;
 pub mod compare;
 pub mod exercise;
 pub mod listings;
+pub mod pfm;
 pub mod ray_tree;
 pub mod snapshot;
 

@@ -112,7 +112,18 @@ pub struct AccuracyArgs {
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
+
+    /// Only make (or read from the cache) the study's reference, and write
+    /// it into the output folder as reference.png and reference.pfm.gz
+    /// (its linear values, gzipped): the file a handout carries, since a
+    /// handout cannot render it with reference code. No rows, no report.
+    #[arg(long)]
+    pub reference_only: bool,
 }
+
+/// The name of the reference's linear values, gzipped PFM, in the output
+/// folder: chapter 7's lab page measures against it.
+pub const REFERENCE_PFM_GZ: &str = "reference.pfm.gz";
 
 /// Runs `raybook accuracy`: announces the study, measures, prints the
 /// report and writes it with the CSV, the plots and the error maps.
@@ -124,6 +135,9 @@ pub fn main(args: &AccuracyArgs) -> ExitCode {
             return ExitCode::FAILURE;
         }
     };
+    if args.reference_only {
+        return reference_only(&scene, args);
+    }
     let run = || {
         let study = run_study(&scene, args);
         let written = write_results(&study, &args.out);
@@ -152,9 +166,49 @@ pub fn main(args: &AccuracyArgs) -> ExitCode {
     }
 }
 
-/// The study of `scene` as `args` ask, announced, with a progress bar, its
-/// error maps written.
-fn run_study(scene: &Scene, args: &AccuracyArgs) -> Study {
+/// `--reference-only`: the plan's reference, from the cache or rendered,
+/// written into the output folder.
+fn reference_only(scene: &Scene, args: &AccuracyArgs) -> ExitCode {
+    let plan = plan_of(scene, args);
+    let scene = scene.clone().with_size(plan.width, plan.height);
+    let cache = args.cache.clone().unwrap_or_else(default_cache);
+    let made = with_threads(args.threads, || {
+        reference(&scene, &plan.reference(), &cache, &|| {})
+    });
+    let Ok(made) = made else {
+        eprintln!("error: cannot start {:?} rendering threads", args.threads);
+        return ExitCode::FAILURE;
+    };
+    match write_reference(&made.image, &args.out) {
+        Ok(paths) => {
+            let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+            let from = if made.from_cache {
+                "read from"
+            } else {
+                "made in"
+            };
+            println!(
+                "reference {}×{} ({} jittered rays per pixel, twice), {from} {}; wrote {}",
+                plan.width,
+                plan.height,
+                plan.reference_samples,
+                made.cache.display(),
+                names.join(", ")
+            );
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!(
+                "error: cannot write the reference to {}: {e}",
+                args.out.display()
+            );
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The plan `args` ask for on `scene`.
+fn plan_of(scene: &Scene, args: &AccuracyArgs) -> Plan {
     let mut plan = Plan::new(args.quick, Termination::of(scene));
     if let Some(seeds) = args.seeds {
         plan.seeds = seeds;
@@ -164,6 +218,39 @@ fn run_study(scene: &Scene, args: &AccuracyArgs) -> Study {
     if let (Some(width), Some(height)) = (args.width, args.height) {
         (plan.width, plan.height) = (width, height);
     }
+    plan
+}
+
+/// Writes the reference as reference.png and, its linear values gzipped,
+/// [`REFERENCE_PFM_GZ`] into `folder`; returns their paths.
+fn write_reference(image: &Image, folder: &Path) -> Result<Vec<PathBuf>, String> {
+    use std::io::Write;
+    let text = |e: std::io::Error| e.to_string();
+    let png = folder.join("reference.png");
+    image.save_png(&png).map_err(text)?;
+    let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::best());
+    gz.write_all(&raybook::workbench::pfm::encode(image))
+        .map_err(text)?;
+    let pfm = folder.join(REFERENCE_PFM_GZ);
+    write_atomically(&pfm, &gz.finish().map_err(text)?).map_err(text)?;
+    Ok(vec![png, pfm])
+}
+
+/// The picture in a gzipped PFM file, such as [`REFERENCE_PFM_GZ`].
+pub fn read_pfm_gz(path: &Path) -> Result<Image, String> {
+    use std::io::Read;
+    let file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut bytes = Vec::new();
+    flate2::read::GzDecoder::new(file)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("{}: not gzip: {e}", path.display()))?;
+    raybook::workbench::pfm::decode(&bytes).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// The study of `scene` as `args` ask, announced, with a progress bar, its
+/// error maps written.
+fn run_study(scene: &Scene, args: &AccuracyArgs) -> Study {
+    let plan = plan_of(scene, args);
     let cache = args.cache.clone().unwrap_or_else(default_cache);
     let quiet = args.quiet;
     let mut bar = ProgressBar::hidden();
@@ -322,9 +409,8 @@ fn write_results(study: &Study, folder: &Path) -> Result<Vec<PathBuf>, String> {
     let effects = study.effects.iter().map(|(_, r)| ("effects", r));
     let csv_path = folder.join("accuracy.csv");
     write_atomically(&csv_path, csv(rows.chain(effects), study.floor).as_bytes()).map_err(text)?;
-    let png = folder.join("reference.png");
-    study.reference.image.save_png(&png).map_err(text)?;
-    let mut written = vec![md, csv_path, png];
+    let mut written = vec![md, csv_path];
+    written.extend(write_reference(&study.reference.image, folder)?);
     written.extend(plot::plot_all(study, folder)?);
     Ok(written)
 }

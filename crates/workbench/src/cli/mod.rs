@@ -99,6 +99,13 @@ pub struct RenderArgs {
     #[arg(long, value_name = "W", value_parser = weight)]
     pub min_weight: Option<f32>,
 
+    /// Also write the picture's linear values, as the tracer computed them
+    /// (f32, before the PNG clamps them to [0, 1] and rounds them to 8
+    /// bits), to FILE.pfm: what `raybook accuracy` and the lab's chapter-7
+    /// page measure error on.
+    #[arg(long, value_name = "FILE.pfm", conflicts_with = "pixel")]
+    pub linear: Option<PathBuf>,
+
     /// No progress bar.
     #[arg(short, long)]
     pub quiet: bool,
@@ -189,6 +196,14 @@ impl RenderArgs {
             }
         }
         Ok(())
+    }
+
+    /// Writes `image`'s linear values to `--linear FILE.pfm`, if asked.
+    pub fn write_linear(&self, image: &Image) -> Result<(), String> {
+        let Some(path) = &self.linear else {
+            return Ok(());
+        };
+        crate::pfm::save(image, path).map_err(|e| format!("cannot write {}: {e}", path.display()))
     }
 
     /// Where the picture goes.
@@ -363,6 +378,10 @@ fn run_loaded(
     let out = args.output_path(chapter);
     if let Err(e) = image.save_png(&out) {
         eprintln!("error: cannot write {}: {e}", out.display());
+        return ExitCode::FAILURE;
+    }
+    if let Err(e) = args.write_linear(&image) {
+        eprintln!("error: {e}");
         return ExitCode::FAILURE;
     }
     let rendered = Rendered {

@@ -26,7 +26,7 @@ mod words;
 
 pub use fold::{Fold, Folded, count_rays};
 pub use nodes::{Arriving, HitFacts, Terms};
-pub use svg::to_svg;
+pub use svg::{to_svg, to_svg_noted};
 pub use words::{num, vec3};
 
 /// The whole tree of one pixel, as `--pixel X,Y --json` writes it.

@@ -37,13 +37,21 @@ const LINE: f32 = 20.0;
 /// The picture of `tree`'s rays: `scene` gives the camera's up vector and
 /// the objects' shapes; the rays `fold` folds are drawn thin and grey.
 pub fn to_svg(tree: &RayTree, scene: &Scene, fold: Fold) -> String {
+    to_svg_noted(tree, scene, fold, None)
+}
+
+/// [`to_svg`] with a `note` as the legend's first line: what the drawing
+/// is drawn from, when that is not a whole tree (the lab draws the
+/// reference's shortened facts).
+pub fn to_svg_noted(tree: &RayTree, scene: &Scene, fold: Fold, note: Option<&str>) -> String {
     let plane = Plane::of(scene.camera.up, &tree.primary);
     let rays = segments(&tree.primary, &plane, &fold, reach(&tree.primary, &plane));
     let met = objects_met(&rays, scene, &plane);
     let frame = Frame::fit(&rays, &met);
-    let mut legend = legend(&rays, &met, &frame, &fold);
-    legend.extend(off_plane(&rays, &plane, &frame));
-    let legend: Vec<String> = legend.iter().flat_map(|line| wrap(line, 100)).collect();
+    let mut lines: Vec<String> = note.map(str::to_owned).into_iter().collect();
+    lines.extend(legend(&rays, &met, &frame, &fold));
+    lines.extend(off_plane(&rays, &plane, &frame));
+    let legend: Vec<String> = lines.iter().flat_map(|line| wrap(line, 100)).collect();
     let mut svg = String::new();
     let height = frame.top + frame.height + MARGIN + LINE * legend.len() as f32;
     head(&mut svg, tree, height);
