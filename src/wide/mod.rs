@@ -32,8 +32,6 @@
 //! What it buys is measured in chapter 8's text and book/appendix/performance.md.
 
 mod closest;
-#[cfg(target_arch = "x86_64")]
-mod eight;
 mod node;
 mod packet;
 mod primitive;
@@ -68,47 +66,11 @@ pub struct WideBvh<'a> {
     /// In a small scene, each packet's box, tested before it (none for
     /// spheres): [`Packet::bounds`].
     flat_boxes: Vec<Option<Aabb>>,
-    /// How many boxes a shadow ray's walk tests at once (read only on x86-64).
-    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
-    lanes: Lanes,
-}
-
-/// How many boxes a shadow ray's walk tests in one slab test: four (SSE,
-/// every x86-64 CPU; any other CPU through glam's fallback), or eight, two
-/// nodes at once, where the CPU has AVX2 (`eight.rs`). The answers are the
-/// same bits either way.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Lanes {
-    Four,
-    Eight,
-}
-
-impl Lanes {
-    /// Eight where this CPU has AVX2 and `RAYBOOK_NO_AVX2` is unset, else four.
-    pub fn detect() -> Lanes {
-        #[cfg(target_arch = "x86_64")]
-        if eight::available() {
-            return Lanes::Eight;
-        }
-        Lanes::Four
-    }
 }
 
 impl<'a> WideBvh<'a> {
-    /// Builds chapter 8's binary tree over `objects` and collapses it; its
-    /// shadow rays test as many lanes as the CPU has ([`Lanes::detect`]).
+    /// Builds chapter 8's binary tree over `objects` and collapses it.
     pub fn build(objects: &'a [Object]) -> WideBvh<'a> {
-        Self::build_with(objects, Lanes::detect())
-    }
-
-    /// [`build`](Self::build) with the given lanes; `Lanes::Eight` only if
-    /// [`Lanes::detect`] gives it (else four).
-    pub fn build_with(objects: &'a [Object], lanes: Lanes) -> WideBvh<'a> {
-        let lanes = if lanes == Lanes::Eight {
-            Lanes::detect()
-        } else {
-            lanes
-        };
         let (mut items, planes) = build::items(objects);
         let small = items.len() <= FLAT_MAX;
         let binary = if small {
@@ -149,7 +111,6 @@ impl<'a> WideBvh<'a> {
             nodes,
             packets,
             planes,
-            lanes,
         }
     }
 

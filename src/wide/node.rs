@@ -10,14 +10,13 @@ use super::primitive::PreparedRay;
 
 /// Chapter 8's factor that makes the slab test's far distance an upper
 /// bound of the exact one despite rounding (1 + 2γ₃).
-pub(super) const ROBUST_FAR: f32 =
-    1.0 + 2.0 * (3.0 * f32::EPSILON / 2.0) / (1.0 - 3.0 * f32::EPSILON / 2.0);
+const ROBUST_FAR: f32 = 1.0 + 2.0 * (3.0 * f32::EPSILON / 2.0) / (1.0 - 3.0 * f32::EPSILON / 2.0);
 
 /// Four children: their boxes as six vectors of four lanes (min x, y, z,
 /// then max x, y, z), and where each child is. 128 bytes, two cache lines.
 #[derive(Debug, Clone, Copy)]
 pub struct Node4 {
-    pub(super) bounds: [Vec4; 6],
+    bounds: [Vec4; 6],
     /// A node's index, or a leaf's first primitive.
     index: [u32; 4],
     /// A leaf's number of primitives; 0 for a node, [`EMPTY_LANE`] for none.
@@ -108,13 +107,13 @@ impl Node4 {
 /// visits, each coordinate in all four lanes.
 #[derive(Debug, Clone, Copy)]
 pub struct Slabs {
-    pub(super) origin: [Vec4; 3],
+    origin: [Vec4; 3],
     /// 1/rd per coordinate (±∞ where rd has a zero).
-    pub(super) inverse: [Vec4; 3],
+    inverse: [Vec4; 3],
     /// For each axis, 0 if rd points up that axis (the box's min face is
     /// met first), 3 if down (the max face is): where the near planes are
     /// among a node's six bound vectors.
-    pub(super) near_face: [usize; 3],
+    near_face: [usize; 3],
 }
 
 impl Slabs {

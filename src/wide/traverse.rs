@@ -61,11 +61,6 @@ impl WideBvh<'_> {
         if self.flat {
             return self.blocks_flat(ray, t_min, t_max);
         }
-        #[cfg(target_arch = "x86_64")]
-        if self.lanes == super::Lanes::Eight {
-            // SAFETY: `Lanes::Eight` is chosen only where `eight::available()`.
-            return unsafe { self.any_in_tree_eight(ray, t_min, t_max) };
-        }
         self.any_in_tree(ray, t_min, t_max)
     }
 
@@ -134,7 +129,7 @@ fn offer_leaf(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, closest: &m
 
 /// Does a primitive of `packets` cast a shadow on the ray in (t_min, t_max)?
 #[inline]
-pub(super) fn blocks(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
+fn blocks(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
     packets.iter().any(|p| p.blocks(ray, t_min, t_max))
 }
 
