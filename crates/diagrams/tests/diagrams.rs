@@ -31,14 +31,13 @@ fn readme(chapter: &str) -> String {
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()))
 }
 
-/// The chapter's text and its answers (`answers.md`, which `workbook hint
-/// ID --level 4` shows after an attempt): a diagram's worked numbers may be
-/// stated in either.
+/// The chapter's text and its answers (`crates/workbook/answers/NN-name.md`,
+/// which `workbook hint ID --level 4` shows after an attempt): a diagram's
+/// worked numbers may be stated in either.
 fn chapter_text(chapter: &str) -> String {
     let answers = workspace_root()
-        .join("chapters")
-        .join(chapter)
-        .join("answers.md");
+        .join("crates/workbook/answers")
+        .join(format!("{chapter}.md"));
     readme(chapter) + "\n" + &std::fs::read_to_string(answers).unwrap_or_default()
 }
 
@@ -86,7 +85,7 @@ fn unstated_facts(diagram: &Diagram, readme: &str) -> Vec<String> {
         }
         if !readme.contains(fact.as_str()) {
             problems.push(format!(
-                "{}: the picture shows {fact:?}, which chapters/{}/README.md (nor its answers.md) \
+                "{}: the picture shows {fact:?}, which chapters/{}/README.md (nor its answers) \
                  does not state",
                 diagram.name, diagram.chapter
             ));

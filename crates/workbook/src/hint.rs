@@ -9,12 +9,14 @@
 //! the heading above that line is shown. Level 3 runs the chapter's tests
 //! and names those that wait for the exercise (they reach its `todo!`), or
 //! that fail while it is written, with the file that holds each test.
-//! Level 4 is the answer, from the chapter's `answers.md` (its section
-//! `## ID`), offered only once the student has tried: the exercise's body
-//! is no longer the handout's `todo!` and the chapter compiles (its tests
-//! ran at level 3). The answers are in the handout, so this is no secret
-//! kept: it is the order of things. The chapter's text derives and asks,
-//! and the answer comes after an attempt, not beside the question.
+//! Level 4 is the answer, from the chapter's answers file
+//! (`crates/workbook/answers/NN-name.md`, its section `## ID`), offered
+//! only once the student has tried: the exercise's body is no longer the
+//! handout's `todo!` and the chapter compiles (its tests ran at level 3).
+//! The answers are in the handout, among the workbook's own files and not
+//! in the chapter's folder beside the question, so this is no secret kept:
+//! it is the order of things. The chapter's text derives and asks, and the
+//! answer comes after an attempt.
 
 use std::path::Path;
 use std::process::ExitCode;
@@ -138,15 +140,15 @@ pub fn offered(region: &Region, output: &TestOutput) -> Result<(), String> {
     Ok(())
 }
 
-/// The answer to `region` from its chapter's `answers.md`, after an
-/// attempt whose tests ran with `output`.
+/// The answer to `region` from its chapter's answers file
+/// ([`answers_path`]), after an attempt whose tests ran with `output`.
 fn answer(
     root: &Path,
     chapter: &ChapterEntry,
     region: &Region,
     output: &TestOutput,
 ) -> Result<String, String> {
-    let path = chapter.path().join(ANSWERS);
+    let path = answers_path(chapter);
     let answers = std::fs::read_to_string(root.join(&path))
         .map_err(|e| format!("{}: {e}", path.display()))?;
     let answer = answer_in(&answers, &region.id)
@@ -159,8 +161,16 @@ fn answer(
     Ok(format!("\n{verdict} ({}):\n\n{answer}", path.display()))
 }
 
-/// The file beside a chapter's README that holds its exercises' answers.
-pub const ANSWERS: &str = "answers.md";
+/// The folder, relative to the workspace root, that holds each chapter's
+/// answers: with the workbook's own files, so that a student at work in a
+/// chapter's folder finds the text's questions there and not their answers.
+pub const ANSWERS: &str = "crates/workbook/answers";
+
+/// The file that holds `chapter`'s answers, relative to the workspace
+/// root: `crates/workbook/answers/NN-name.md`.
+pub fn answers_path(chapter: &ChapterEntry) -> std::path::PathBuf {
+    Path::new(ANSWERS).join(format!("{}.md", chapter.folder))
+}
 
 /// The section of an answers file for exercise `id`: the lines under the
 /// heading `## id` up to the next heading of that level.

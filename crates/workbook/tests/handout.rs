@@ -419,7 +419,8 @@ fn texts_a_student_reads() -> Vec<(PathBuf, String)> {
 
 /// The answer comes after an attempt (`workbook hint ID --level 4`), not
 /// beside the question: every exercise has one in its chapter's
-/// `answers.md`, and no line of it stands in any chapter's text, in an
+/// answers file (`crates/workbook/answers/NN-name.md`, not in the chapter's
+/// folder), and no line of it stands in any chapter's text, in an
 /// appendix, in the contract that `hint` level 1 shows or in the `todo!`.
 #[test]
 fn every_exercise_has_an_answer_and_neither_its_text_nor_its_contract_shows_it() {
@@ -431,9 +432,14 @@ fn every_exercise_has_an_answer_and_neither_its_text_nor_its_contract_shows_it()
             .find(|c| Some(c.number()) == region.chapter())
             .unwrap();
         let folder = root().join(chapter.path());
-        let answers = std::fs::read_to_string(folder.join(workbook::hint::ANSWERS)).unwrap();
+        let answers_file = workbook::hint::answers_path(chapter);
+        let answers = std::fs::read_to_string(root().join(&answers_file)).unwrap();
         let answer = workbook::hint::answer_in(&answers, id)
-            .unwrap_or_else(|| panic!("{id}: its chapter's answers.md has no `## {id}`"));
+            .unwrap_or_else(|| panic!("{id}: {} has no `## {id}`", answers_file.display()));
+        assert!(
+            !folder.join("answers.md").exists(),
+            "{id}: no answers file stands in the chapter's folder, beside its questions"
+        );
         assert!(answer.trim().len() > 80, "{id}: a short answer: {answer}");
         let readme = std::fs::read_to_string(folder.join("README.md")).unwrap();
         let source = std::fs::read_to_string(root().join(&file)).unwrap();
