@@ -183,7 +183,7 @@ pub fn follow_secondary_rays(
     path: Path,
     stats: &mut Stats,
 ) -> Color {
-    // EXERCISE(ch05-recursion): the sum, over the secondary rays that the tracer lets go on one bounce deeper (with the path's weight times the ray's own), of the ray's weight times the colour seen along it; count each ray traced
+    // EXERCISE(ch05-recursion): the sum, over the secondary rays that the tracer lets go on one bounce deeper (with the path's weight times the ray's own), of the colour seen along each times a weight (which weight is the README's question); count each ray traced
     crate::workbench::exercise::solution_begins("ch05-recursion");
     let mut color = Color::ZERO;
     for secondary in secondary_rays.into_iter().flatten() {

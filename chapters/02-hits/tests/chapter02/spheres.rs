@@ -30,14 +30,14 @@ pub(crate) fn the_lectures_worked_example() {
 #[test]
 pub(crate) fn a_sphere_away_from_the_origin_with_radius_2() {
     // Centre m = (1, −2, 3), radius ρ = 2, a ray from (1, 4, 3) straight
-    // down: r0 − m = (0, 6, 0), so a = 1, b = −12, c = 36 − 4 = 32 and
+    // down: r0 − m = (0, 6, 0), so a = 1, b = −12, c = 32 and
     // t² − 12t + 32 = 0: t = 4 and t = 8.
     let (m, rho) = (Vec3::new(1.0, -2.0, 3.0), 2.0);
     let ray = Ray::new(Vec3::new(1.0, 4.0, 3.0), Vec3::NEG_Y);
     assert_eq!(
         sphere_roots_abc(m, rho, &ray),
         Some((4.0, 8.0)),
-        "t² − 12t + 32 = 0 (r0 − m = (0, 6, 0), c = |r0 − m|² − ρ² with ρ² = 4) has the roots 4 and 8"
+        "t² − 12t + 32 = 0 (r0 − m = (0, 6, 0), ρ = 2: a = 1, b = −12, c = 32, check yours on paper) has the roots 4 and 8"
     );
     // Sideways, 1 off the centre: the chord is 2·√(ρ² − 1) = 2√3 long.
     let ray = Ray::new(Vec3::new(-5.0, -1.0, 3.0), Vec3::X);
