@@ -31,9 +31,9 @@ impl Fold {
     };
 
     /// Does `ray` fold? The primary ray's path weight is 1 in every
-    /// channel, so a weight W is W of the pixel's (0.01 = 1%). The largest
-    /// channel is compared: a ray folds when its path weight is below W in
-    /// every channel, as the tracer's min_weight compares it.
+    /// channel, so a weight W is W of the pixel's (0.01 = 1%). A ray folds
+    /// when its path weight is below W as the complete tracer compares a
+    /// path weight with min_weight.
     pub fn folds(&self, ray: &RayNode) -> bool {
         ray.kind != RayKind::Primary && (self.too_deep(ray) || self.too_light(ray))
     }

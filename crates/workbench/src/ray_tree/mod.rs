@@ -82,7 +82,8 @@ pub enum End {
     NoHit,
     /// The ray was not traced: it would bounce more than `max_depth` times.
     MaxDepth,
-    /// The ray was not traced: its path's weight is below `min_weight` in every channel.
+    /// The ray was not traced: its path's weight is below `min_weight`, by
+    /// chapter 7's weight criterion.
     WeightThreshold,
     /// The ray hit a surface that sends no secondary ray on (matte and opaque).
     NoSecondaryRays,

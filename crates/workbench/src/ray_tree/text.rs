@@ -203,7 +203,7 @@ fn end_text(end: End) -> &'static str {
         End::NoHit => "path ended (no hit)",
         End::MaxDepth => "path ended (maximum depth: one bounce more than max_depth)",
         End::WeightThreshold => {
-            "path ended (weight threshold: the path weight is below min_weight in every channel)"
+            "path ended (weight threshold: the path weight is below min_weight)"
         }
         End::NoSecondaryRays => "path ended (no secondary rays)",
         End::NotTraced => "the tracer did not follow it",
