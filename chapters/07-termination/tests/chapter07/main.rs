@@ -40,7 +40,7 @@ fn below_threshold_first() {
             got == below,
             format_args!(
                 "below_threshold({weight}, 0.1) gave {got}, want {below} (the test \
-                 a_weight_is_below_the_threshold_only_if_every_channel_is says more)"
+                 below_threshold_decides_five_weights says more)"
             ),
         );
     }
@@ -56,7 +56,7 @@ fn count(n: u32, thing: &str) -> String {
 }
 
 #[test]
-fn a_weight_is_below_the_threshold_only_if_every_channel_is() {
+fn below_threshold_decides_five_weights() {
     for (weight, below, why) in [
         (Color::splat(0.05), true, "every channel is below 0.1"),
         (Color::splat(0.09), true, "every channel is below 0.1"),
@@ -160,7 +160,7 @@ fn a_weight_equal_to_the_threshold_is_traced() {
 }
 
 #[test]
-fn a_path_ends_by_weight_only_when_every_channel_is_below_the_threshold() {
+fn two_facing_tinted_mirrors_end_by_weight() {
     // Red weights 0.5, 0.25, 0.125, 0.0625; green and blue 0.05 from the
     // first bounce on. Threshold 0.1: red keeps three rays going.
     let termination = Termination {
@@ -279,16 +279,16 @@ fn snapshot_default() {
 /// the snapshot, when it differs, names those of them that fail beside it.
 const PRECISE: &[Precise] = &[
     (
-        "a_weight_is_below_the_threshold_only_if_every_channel_is",
-        a_weight_is_below_the_threshold_only_if_every_channel_is,
+        "below_threshold_decides_five_weights",
+        below_threshold_decides_five_weights,
     ),
     (
         "a_weight_equal_to_the_threshold_is_traced",
         a_weight_equal_to_the_threshold_is_traced,
     ),
     (
-        "a_path_ends_by_weight_only_when_every_channel_is_below_the_threshold",
-        a_path_ends_by_weight_only_when_every_channel_is_below_the_threshold,
+        "two_facing_tinted_mirrors_end_by_weight",
+        two_facing_tinted_mirrors_end_by_weight,
     ),
     (
         "in_two_perfect_mirrors_only_depth_ends_paths",
