@@ -160,3 +160,53 @@ fn bad_input_gets_a_clear_error() {
     // The server still answers after all of them.
     assert_eq!(get(&below("/api/state")).0, 200);
 }
+
+/// Sends `head` (a request's line and headers, without the blank line) and
+/// none of the body it announces.
+fn send_head_only(head: &str) -> TcpStream {
+    let mut stream = TcpStream::connect(("127.0.0.1", lab().port())).unwrap();
+    write!(stream, "{head}\r\n\r\n").unwrap();
+    stream
+}
+
+/// A body announced and not sent (or too long to hold) neither aborts the
+/// lab (tiny_http 0.12 drains it with one buffer of the announced length)
+/// nor holds its threads: the page is answered after more of them than
+/// the lab has threads.
+#[test]
+fn an_announced_body_neither_kills_nor_blocks_the_server() {
+    let port = lab().port();
+    let lengths = [
+        "100000000000",
+        "18446744073709551615",
+        "5000",
+        "5000",
+        "5000",
+        "5000",
+    ];
+    let held: Vec<TcpStream> = (lengths.iter())
+        .map(|length| {
+            send_head_only(&format!(
+                "POST {} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nContent-Length: {length}",
+                below("/api/state")
+            ))
+        })
+        .collect();
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    let mut stream = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    stream
+        .set_read_timeout(Some(std::time::Duration::from_secs(20)))
+        .unwrap();
+    let target = below("/api/state");
+    write!(
+        stream,
+        "GET {target} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    let mut bytes = Vec::new();
+    let read = stream.read_to_end(&mut bytes);
+    let text = String::from_utf8_lossy(&bytes);
+    assert!(read.is_ok(), "no answer within 20 s: {read:?}");
+    assert!(text.starts_with("HTTP/1.1 200"), "{text}");
+    drop(held);
+}
