@@ -74,7 +74,8 @@ impl Settings {
             _ => return Err("the maximum depth is a whole number from 0 to 64".into()),
         };
         let min_weight = match text("min_weight").map(str::parse::<f32>) {
-            Some(Ok(w)) if (0.0..=1.0).contains(&w) => w,
+            // `-0` is in range: as 0, not as `-0`, which reads as an option.
+            Some(Ok(w)) if (0.0..=1.0).contains(&w) => w.abs(),
             _ => return Err("the weight threshold is a number from 0 to 1 (0: none)".into()),
         };
         let rays = match text("rays") {
@@ -105,22 +106,19 @@ impl Settings {
 
     /// The chapter binary's options for this setting: the study's rows
     /// (`crates/measure/src/accuracy/measure.rs`, `scene_for`): one ray
-    /// through the centre has no seed; N jittered rays have theirs.
+    /// through the centre has no seed; N jittered rays have theirs. Each
+    /// as `--option=value`, so that no value is ever read as an option.
     pub fn args(&self) -> Vec<String> {
         let mut args = vec![
-            "--max-depth".to_owned(),
-            self.max_depth.to_string(),
-            "--min-weight".to_owned(),
-            self.min_weight.to_string(),
+            format!("--max-depth={}", self.max_depth),
+            format!("--min-weight={}", self.min_weight),
         ];
         match self.rays {
-            Rays::Centre => args.extend(["--samples".to_owned(), "1".to_owned()]),
-            Rays::Jittered(n) => args.extend([
-                "--samples".to_owned(),
-                n.to_string(),
-                "--seed".to_owned(),
-                self.seed.to_string(),
-            ]),
+            Rays::Centre => args.push("--samples=1".to_owned()),
+            Rays::Jittered(n) => {
+                args.push(format!("--samples={n}"));
+                args.push(format!("--seed={}", self.seed));
+            }
         }
         args
     }
@@ -335,13 +333,25 @@ mod tests {
         .unwrap();
         assert_eq!(
             s.args().join(" "),
-            "--max-depth 6 --min-weight 0.001 --samples 16 --seed 3"
+            "--max-depth=6 --min-weight=0.001 --samples=16 --seed=3"
         );
         let centre = parse(&[("max_depth", "1"), ("min_weight", "0"), ("rays", "centre")]);
         assert_eq!(
             centre.unwrap().args().join(" "),
-            "--max-depth 1 --min-weight 0 --samples 1"
+            "--max-depth=1 --min-weight=0 --samples=1"
         );
+    }
+
+    #[test]
+    fn no_value_reaches_the_binary_as_an_option() {
+        // `-0` parses as an f32 in 0..=1; passed on as `-0` it was taken by
+        // the binary's parser for an option ("unexpected argument '-0'").
+        let s = parse(&[("max_depth", "3"), ("min_weight", "-0"), ("rays", "centre")]).unwrap();
+        assert!(s.min_weight.is_sign_positive());
+        assert_eq!(s.name(), "depth 3, threshold 0, centre");
+        for arg in s.args() {
+            assert!(arg.starts_with("--") && arg.contains('='), "{arg}");
+        }
     }
 
     #[test]
