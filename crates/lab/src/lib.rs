@@ -45,7 +45,9 @@
 //! rebinds its name to 127.0.0.1 sends its own name); it serves only its own
 //! page and the pictures it rendered, never a file named by the request
 //! ([`guard`]). Answers carry a content security policy that allows the
-//! page's own script and nothing else.
+//! page's own script and nothing else, and no page of another site may
+//! frame it (`frame-ancestors 'none'`: no click on the page can be one a
+//! hidden frame stole).
 
 pub mod accuracy;
 pub mod bench;
@@ -185,7 +187,8 @@ fn respond(request: Request, state: &State, token: &str, port: u16) {
         ("Referrer-Policy", "no-referrer"),
         (
             "Content-Security-Policy",
-            "default-src 'self'; img-src 'self' data:; style-src 'self'; script-src 'self'",
+            "default-src 'self'; img-src 'self' data:; style-src 'self'; script-src 'self'; \
+             frame-ancestors 'none'; base-uri 'none'",
         ),
     ] {
         if let Ok(header) = Header::from_bytes(field.as_bytes(), value.as_bytes()) {

@@ -161,6 +161,33 @@ fn bad_input_gets_a_clear_error() {
     assert_eq!(get(&below("/api/state")).0, 200);
 }
 
+/// The page's answers tell the browser to run its own script only, never
+/// to guess a type, never to keep a copy, and never to show the page in a
+/// frame of another site's (a click there would be one it stole).
+#[test]
+fn answers_carry_the_safety_headers() {
+    let port = lab().port();
+    let mut stream = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    let target = below("/");
+    write!(
+        stream,
+        "GET {target} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    let mut text = String::new();
+    stream.read_to_string(&mut text).unwrap();
+    let head = text.split("\r\n\r\n").next().unwrap().to_ascii_lowercase();
+    for header in [
+        "x-content-type-options: nosniff",
+        "cache-control: no-store",
+        "referrer-policy: no-referrer",
+        "content-security-policy: default-src 'self'",
+        "frame-ancestors 'none'",
+    ] {
+        assert!(head.contains(header), "{header} missing from:\n{head}");
+    }
+}
+
 /// Sends `head` (a request's line and headers, without the blank line) and
 /// none of the body it announces.
 fn send_head_only(head: &str) -> TcpStream {
