@@ -9,6 +9,11 @@ use serde_json::{Value, json};
 
 use super::{CHAPTER, Point, Settings, measure_telling};
 
+/// The most points the page keeps (the latest): every poll sends them
+/// all, so a page left asking for renders all day would otherwise grow the
+/// lab's memory and each answer without end.
+const MOST_POINTS: usize = 200;
+
 /// The page's renders: the one running, and the points measured.
 #[derive(Default)]
 struct Inner {
@@ -79,6 +84,9 @@ impl Runs {
             inner.running = None;
             match measured {
                 Ok((point, picture)) => {
+                    if inner.points.len() == MOST_POINTS {
+                        inner.points.remove(0);
+                    }
                     inner.points.push(point);
                     inner.picture = picture;
                 }
@@ -144,5 +152,27 @@ mod tests {
         assert!(snapshot["running"].is_null());
         assert!(snapshot["error"].as_str().unwrap().contains("panic"));
         assert!(runs.claim(SETTINGS).is_ok(), "another setting may run");
+    }
+
+    #[test]
+    fn the_page_keeps_the_latest_points_only() {
+        let runs = Runs::default();
+        for rays in 0..MOST_POINTS as u64 + 3 {
+            runs.claim(SETTINGS).unwrap();
+            let point = Point {
+                settings: SETTINGS,
+                name: SETTINGS.name(),
+                rmse: 0.0,
+                mse: 0.0,
+                rays,
+                seconds: 0.0,
+                wall_seconds: 0.0,
+            };
+            runs.run_in_background(move || Ok((point, None)));
+            when_done(&runs);
+        }
+        let points = runs.snapshot()["points"].as_array().unwrap().clone();
+        assert_eq!(points.len(), MOST_POINTS);
+        assert_eq!(points[0]["rays"], 3, "the oldest went first");
     }
 }
