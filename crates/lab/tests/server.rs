@@ -149,6 +149,30 @@ fn bad_input_gets_a_clear_error() {
             "/api/accuracy/run?max_depth=6&min_weight=0&rays=4",
             "the seed is a whole number",
         ),
+        (
+            "/api/accuracy/run?max_depth=1e309&min_weight=0&rays=centre",
+            "maximum depth is a whole number from 0 to 64",
+        ),
+        (
+            "/api/accuracy/run?max_depth=4294967296&min_weight=0&rays=centre",
+            "maximum depth is a whole number from 0 to 64",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=1e309&rays=centre",
+            "weight threshold is a number from 0 to 1",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=inf&rays=centre",
+            "weight threshold is a number from 0 to 1",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=0&rays=4294967296&seed=1",
+            "a square number of jittered rays",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=0&rays=16&seed=18446744073709551616",
+            "the seed is a whole number",
+        ),
     ];
     for (path, expected) in cases {
         let (status, body) = get(&below(path));
