@@ -157,6 +157,10 @@ pub struct Point {
     pub wall_seconds: f64,
 }
 
+/// The most bytes the reference may unpack to: the study's is 128×96
+/// (147 kB); a file of a few kB may unpack to gigabytes (all zeros).
+const MOST_REFERENCE_BYTES: u64 = 64 << 20;
+
 /// The reference the study measured against, carried with the handout:
 /// `accuracy/reference.pfm.gz` (gzipped PFM, linear values).
 pub fn reference(root: &Path) -> Result<Image, String> {
@@ -170,8 +174,15 @@ pub fn reference(root: &Path) -> Result<Image, String> {
     })?;
     let mut bytes = Vec::new();
     flate2::read::GzDecoder::new(file)
+        .take(MOST_REFERENCE_BYTES + 1)
         .read_to_end(&mut bytes)
         .map_err(|e| format!("{}: not gzip: {e}", path.display()))?;
+    if bytes.len() as u64 > MOST_REFERENCE_BYTES {
+        return Err(format!(
+            "{}: unpacks to more than {MOST_REFERENCE_BYTES} bytes: not the study's reference",
+            path.display()
+        ));
+    }
     workbook::workbench::pfm::decode(&bytes).map_err(|e| format!("{}: {e}", path.display()))
 }
 
@@ -403,6 +414,23 @@ mod tests {
         assert!(!is_stale(&root, &binary), "built after the last edit");
         at(&source, 3_000);
         assert!(is_stale(&root, &binary), "edited since");
+        std::fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn a_reference_that_unpacks_to_gigabytes_is_refused() {
+        use std::io::Write;
+        let root = std::env::temp_dir().join(format!("lab-bomb-{}", std::process::id()));
+        std::fs::create_dir_all(root.join(STUDY)).unwrap();
+        let file = std::fs::File::create(root.join(STUDY).join("reference.pfm.gz")).unwrap();
+        let mut gz = flate2::write::GzEncoder::new(file, flate2::Compression::fast());
+        let zeros = vec![0u8; 1 << 20];
+        for _ in 0..=(MOST_REFERENCE_BYTES >> 20) {
+            gz.write_all(&zeros).unwrap();
+        }
+        gz.finish().unwrap();
+        let error = reference(&root).map(|_| ()).unwrap_err();
+        assert!(error.contains("unpacks to more than"), "{error}");
         std::fs::remove_dir_all(&root).unwrap();
     }
 
