@@ -299,8 +299,11 @@ fn render(
         return Err(chapter::failure(&output));
     }
     let stdout = String::from_utf8_lossy(&output.stdout);
-    let (rays, seconds) = reported(&stdout)
-        .ok_or_else(|| format!("your binary did not report its rays and time:\n{stdout}"))?;
+    let (rays, seconds) = reported(&stdout).ok_or_else(|| {
+        let lines: Vec<&str> = stdout.lines().collect();
+        let last = lines[lines.len().saturating_sub(8)..].join("\n");
+        format!("your binary did not report its rays and time; its output ends:\n{last}")
+    })?;
     Ok(Rendered { pfm, rays, seconds })
 }
 
