@@ -141,13 +141,18 @@ impl Slots {
             .map(|_| Slot(&self.0))
     }
 
-    /// The answer when none is free.
+    /// The answer when none is free: `busy`, so that the page asks again
+    /// while it still wants this answer.
     fn busy() -> Answer {
-        Answer::error(
-            503,
-            "the lab is still working out two earlier answers (a pixel's trees or a hint's \
-             tests, with your code); ask again when one has arrived",
-        )
+        let error = "the lab is still working out two earlier answers (a pixel's trees or a \
+                     hint's tests, with your code); ask again when one has arrived";
+        Answer {
+            status: 503,
+            content_type: "application/json",
+            body: json!({"error": error, "busy": true})
+                .to_string()
+                .into_bytes(),
+        }
     }
 }
 
@@ -252,5 +257,7 @@ mod tests {
         assert!(slots.take().is_none());
         drop((second, third));
         assert_eq!(slots.0.load(Ordering::SeqCst), 0);
+        let busy: Value = serde_json::from_slice(&Slots::busy().body).unwrap();
+        assert_eq!(busy["busy"], true, "the page asks again");
     }
 }
