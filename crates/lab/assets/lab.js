@@ -168,7 +168,13 @@ async function pick(x, y) {
   document.getElementById("pixel-label").textContent = `(${x}, ${y}) of ${WIDTH}×${HEIGHT}`;
   const asked = `${lab.chapter}/${x},${y}`;
   lab.asked = asked;
-  const answer = await getJson(`api/pixel?chapter=${encodeURIComponent(lab.chapter)}&x=${x}&y=${y}`);
+  const url = `api/pixel?chapter=${encodeURIComponent(lab.chapter)}&x=${x}&y=${y}`;
+  let answer = await getJson(url);
+  // Two earlier pixels still run your code: ask again while this one is wanted.
+  while (answer.busy && lab.asked === asked) {
+    await new Promise((done) => setTimeout(done, 200));
+    answer = await getJson(url);
+  }
   if (lab.asked !== asked) return;  // a later click won
   showTrees(answer);
 }

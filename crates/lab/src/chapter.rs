@@ -1,11 +1,12 @@
 //! The chapters the lab shows, and running a chapter's own binary (the
 //! debug build that its tests and `progress` made, or that the lab builds).
 
+use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
+use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use workbook::progress::read_all;
 use workbook::verify::tree::facts::SIZE;
 use workbook::workbench::chapters::{self, ChapterEntry};
 
@@ -84,7 +85,10 @@ pub fn run_with(
         .stderr(Stdio::piped())
         .spawn()
         .map_err(|e| format!("cannot run {}: {e}", binary.display()))?;
-    let (stdout, stderr) = (read_all(child.stdout.take()), read_all(child.stderr.take()));
+    let (stdout, stderr) = (
+        read_at_most(child.stdout.take()),
+        read_at_most(child.stderr.take()),
+    );
     let started = Instant::now();
     let status = loop {
         match child.try_wait() {
@@ -106,6 +110,24 @@ pub fn run_with(
         status,
         stdout: stdout.join().unwrap_or_default(),
         stderr: stderr.join().unwrap_or_default(),
+    })
+}
+
+/// The most bytes of a run's stdout, or of its stderr, that the lab keeps:
+/// a ray tree's JSON is a few kB, but a `println!` or `dbg!` left in a loop
+/// that never ends prints gigabytes in the minute a run may take.
+pub const MOST_OUTPUT: u64 = 16 << 20;
+
+/// Reads a pipe to its end on a thread of its own (so that the child never
+/// waits on a full pipe), keeping its first [`MOST_OUTPUT`] bytes.
+fn read_at_most(pipe: Option<impl Read + Send + 'static>) -> JoinHandle<Vec<u8>> {
+    std::thread::spawn(move || {
+        let mut kept = Vec::new();
+        if let Some(mut pipe) = pipe {
+            let _ = pipe.by_ref().take(MOST_OUTPUT).read_to_end(&mut kept);
+            let _ = std::io::copy(&mut pipe, &mut std::io::sink());
+        }
+        kept
     })
 }
 
@@ -149,6 +171,19 @@ mod tests {
             ))
         );
         assert_eq!(todo_reached("error: no such file"), None);
+    }
+
+    #[test]
+    fn a_flood_of_output_is_read_to_its_end_but_not_kept() {
+        let flood = std::io::repeat(b'x').take(MOST_OUTPUT + 3 * 4096);
+        let kept = read_at_most(Some(flood)).join().unwrap();
+        assert_eq!(kept.len() as u64, MOST_OUTPUT);
+        assert!(
+            read_at_most(None::<std::io::Empty>)
+                .join()
+                .unwrap()
+                .is_empty()
+        );
     }
 
     #[test]

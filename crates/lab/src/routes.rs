@@ -3,6 +3,7 @@
 //! JSON API. Nothing else: no route reads a file named by the request.
 
 use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use serde_json::{Value, json};
 use workbook::hint::{HintArgs, hint};
@@ -86,11 +87,14 @@ pub fn answer(state: &State, path: &str, query: &str) -> Answer {
         }),
         "/api/pixel" => with_chapter(get("chapter"), |folder| {
             match (parse_pixel(get("x"), get("y")), bench_chapter(folder)) {
-                (Ok(pixel), Ok(entry)) => Answer::json(&trees(&state.root, entry, pixel)),
+                (Ok(pixel), Ok(entry)) => match state.slow.take() {
+                    Some(_slot) => Answer::json(&trees(&state.root, entry, pixel)),
+                    None => Slots::busy(),
+                },
                 (Err(e), _) | (_, Err(e)) => Answer::error(400, e),
             }
         }),
-        "/api/hint" => hint_answer(get("id"), get("level")),
+        "/api/hint" => hint_answer(&state.slow, get("id"), get("level")),
         "/api/accuracy" => Answer::json(&state.accuracy.snapshot()),
         "/api/accuracy/study" => match accuracy::study(&state.root) {
             Ok(study) => Answer::json(&study),
@@ -108,6 +112,53 @@ pub fn answer(state: &State, path: &str, query: &str) -> Answer {
             None => Answer::not_found(),
         },
         _ => picture(state, path),
+    }
+}
+
+/// How many requests that run a process of the student's (a pixel's
+/// trees, a level-3 hint's tests) are answered at once: two of the lab's
+/// four threads. Each may take a minute (`chapter::PATIENCE`: code that
+/// loops for ever), and every arrow key the page sees asks for a pixel: the
+/// other two threads keep answering the page's polls, whatever the
+/// student's code does.
+pub const SLOW_AT_ONCE: usize = 2;
+
+/// The slow requests running, at most [`SLOW_AT_ONCE`].
+#[derive(Default)]
+pub struct Slots(AtomicUsize);
+
+/// A slow request's place among [`SLOW_AT_ONCE`], given back when dropped.
+pub struct Slot<'a>(&'a AtomicUsize);
+
+impl Slots {
+    /// A place for a slow request, if one is free.
+    pub fn take(&self) -> Option<Slot<'_>> {
+        (self.0)
+            .fetch_update(Ordering::SeqCst, Ordering::SeqCst, |n| {
+                (n < SLOW_AT_ONCE).then_some(n + 1)
+            })
+            .ok()
+            .map(|_| Slot(&self.0))
+    }
+
+    /// The answer when none is free: `busy`, so that the page asks again
+    /// while it still wants this answer.
+    fn busy() -> Answer {
+        let error = "the lab is still working out two earlier answers (a pixel's trees or a \
+                     hint's tests, with your code); ask again when one has arrived";
+        Answer {
+            status: 503,
+            content_type: "application/json",
+            body: json!({"error": error, "busy": true})
+                .to_string()
+                .into_bytes(),
+        }
+    }
+}
+
+impl Drop for Slot<'_> {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::SeqCst);
     }
 }
 
@@ -133,7 +184,7 @@ fn with_chapter(name: Option<&str>, then: impl FnOnce(&str) -> Answer) -> Answer
 
 /// The workbook's own hint of exercise `id` at `level` (1 to 4: level 4,
 /// the answer, is refused by `hint` itself until the student has tried).
-fn hint_answer(id: Option<&str>, level: Option<&str>) -> Answer {
+fn hint_answer(slow: &Slots, id: Option<&str>, level: Option<&str>) -> Answer {
     let Some(id) = id else {
         return Answer::error(400, "which exercise? add ?id=ch02-sphere");
     };
@@ -148,6 +199,14 @@ fn hint_answer(id: Option<&str>, level: Option<&str>) -> Answer {
                 ),
             );
         }
+    };
+    // Level 3 runs the chapter's tests.
+    let _slot = match level {
+        3.. => match slow.take() {
+            Some(slot) => Some(slot),
+            None => return Slots::busy(),
+        },
+        _ => None,
     };
     let args = HintArgs {
         id: id.to_owned(),
@@ -180,5 +239,25 @@ fn picture(state: &State, path: &str) -> Answer {
     match bytes {
         Some(bytes) => Answer::ok("image/png", bytes),
         None => Answer::not_found(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slow_requests_leave_threads_for_the_page() {
+        let slots = Slots::default();
+        let first = slots.take().expect("a first place");
+        let second = slots.take().expect("a second place");
+        assert!(slots.take().is_none(), "no third at once");
+        drop(first);
+        let third = slots.take().expect("a place given back is free again");
+        assert!(slots.take().is_none());
+        drop((second, third));
+        assert_eq!(slots.0.load(Ordering::SeqCst), 0);
+        let busy: Value = serde_json::from_slice(&Slots::busy().body).unwrap();
+        assert_eq!(busy["busy"], true, "the page asks again");
     }
 }

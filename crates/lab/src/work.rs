@@ -41,6 +41,8 @@ pub struct State {
     pub root: PathBuf,
     /// Chapter 7's accuracy page: its renders, on threads of their own.
     pub accuracy: crate::accuracy::Runs,
+    /// The requests that run a process of the student's, answered at once.
+    pub slow: crate::routes::Slots,
     inner: Mutex<Inner>,
     benches: Sender<(String, Option<Instant>)>,
     tests: Sender<Option<PathBuf>>,
@@ -55,6 +57,7 @@ impl State {
         let state = Arc::new(State {
             root,
             accuracy: Default::default(),
+            slow: Default::default(),
             inner: Mutex::default(),
             benches,
             tests,

@@ -149,6 +149,30 @@ fn bad_input_gets_a_clear_error() {
             "/api/accuracy/run?max_depth=6&min_weight=0&rays=4",
             "the seed is a whole number",
         ),
+        (
+            "/api/accuracy/run?max_depth=1e309&min_weight=0&rays=centre",
+            "maximum depth is a whole number from 0 to 64",
+        ),
+        (
+            "/api/accuracy/run?max_depth=4294967296&min_weight=0&rays=centre",
+            "maximum depth is a whole number from 0 to 64",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=1e309&rays=centre",
+            "weight threshold is a number from 0 to 1",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=inf&rays=centre",
+            "weight threshold is a number from 0 to 1",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=0&rays=4294967296&seed=1",
+            "a square number of jittered rays",
+        ),
+        (
+            "/api/accuracy/run?max_depth=6&min_weight=0&rays=16&seed=18446744073709551616",
+            "the seed is a whole number",
+        ),
     ];
     for (path, expected) in cases {
         let (status, body) = get(&below(path));
@@ -159,4 +183,81 @@ fn bad_input_gets_a_clear_error() {
     }
     // The server still answers after all of them.
     assert_eq!(get(&below("/api/state")).0, 200);
+}
+
+/// The page's answers tell the browser to run its own script only, never
+/// to guess a type, never to keep a copy, and never to show the page in a
+/// frame of another site's (a click there would be one it stole).
+#[test]
+fn answers_carry_the_safety_headers() {
+    let port = lab().port();
+    let mut stream = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    let target = below("/");
+    write!(
+        stream,
+        "GET {target} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    let mut text = String::new();
+    stream.read_to_string(&mut text).unwrap();
+    let head = text.split("\r\n\r\n").next().unwrap().to_ascii_lowercase();
+    for header in [
+        "x-content-type-options: nosniff",
+        "cache-control: no-store",
+        "referrer-policy: no-referrer",
+        "content-security-policy: default-src 'self'",
+        "frame-ancestors 'none'",
+    ] {
+        assert!(head.contains(header), "{header} missing from:\n{head}");
+    }
+}
+
+/// Sends `head` (a request's line and headers, without the blank line) and
+/// none of the body it announces.
+fn send_head_only(head: &str) -> TcpStream {
+    let mut stream = TcpStream::connect(("127.0.0.1", lab().port())).unwrap();
+    write!(stream, "{head}\r\n\r\n").unwrap();
+    stream
+}
+
+/// A body announced and not sent (or too long to hold) neither aborts the
+/// lab (tiny_http 0.12 drains it with one buffer of the announced length)
+/// nor holds its threads: the page is answered after more of them than
+/// the lab has threads.
+#[test]
+fn an_announced_body_neither_kills_nor_blocks_the_server() {
+    let port = lab().port();
+    let lengths = [
+        "100000000000",
+        "18446744073709551615",
+        "5000",
+        "5000",
+        "5000",
+        "5000",
+    ];
+    let held: Vec<TcpStream> = (lengths.iter())
+        .map(|length| {
+            send_head_only(&format!(
+                "POST {} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nContent-Length: {length}",
+                below("/api/state")
+            ))
+        })
+        .collect();
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    let mut stream = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    stream
+        .set_read_timeout(Some(std::time::Duration::from_secs(20)))
+        .unwrap();
+    let target = below("/api/state");
+    write!(
+        stream,
+        "GET {target} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    let mut bytes = Vec::new();
+    let read = stream.read_to_end(&mut bytes);
+    let text = String::from_utf8_lossy(&bytes);
+    assert!(read.is_ok(), "no answer within 20 s: {read:?}");
+    assert!(text.starts_with("HTTP/1.1 200"), "{text}");
+    drop(held);
 }

@@ -56,11 +56,15 @@ pub fn decode(bytes: &[u8]) -> Result<Image, String> {
     let scale: f32 = scale
         .parse()
         .map_err(|_| format!("a PFM's scale is a number, not {scale:?}"))?;
-    let count = width as usize * height as usize;
-    if body.len() != 12 * count {
+    // Three f32s a pixel: 12 bytes. The size is the file's word, so the
+    // product is checked (4294967295² × 12 overflows a 64-bit usize).
+    let expected = (width as usize)
+        .checked_mul(height as usize)
+        .and_then(|count| count.checked_mul(12));
+    if expected != Some(body.len()) {
+        let expected = expected.map_or("more than 2⁶⁴".to_owned(), |n| n.to_string());
         return Err(format!(
-            "a {width}×{height} PFM holds {} bytes of pixels, this one {}",
-            12 * count,
+            "a {width}×{height} PFM holds {expected} bytes of pixels, this one {}",
             body.len()
         ));
     }
@@ -156,5 +160,11 @@ mod tests {
                 .contains("WIDTH HEIGHT")
         );
         assert!(decode(b"P6 2 2 255").is_err());
+        // A size whose byte count overflows is refused, not a panic.
+        assert!(
+            decode(b"PF\n4294967295 4294967295\n-1.0\n0000")
+                .unwrap_err()
+                .contains("more than")
+        );
     }
 }

@@ -74,7 +74,8 @@ impl Settings {
             _ => return Err("the maximum depth is a whole number from 0 to 64".into()),
         };
         let min_weight = match text("min_weight").map(str::parse::<f32>) {
-            Some(Ok(w)) if (0.0..=1.0).contains(&w) => w,
+            // `-0` is in range: as 0, not as `-0`, which reads as an option.
+            Some(Ok(w)) if (0.0..=1.0).contains(&w) => w.abs(),
             _ => return Err("the weight threshold is a number from 0 to 1 (0: none)".into()),
         };
         let rays = match text("rays") {
@@ -105,22 +106,19 @@ impl Settings {
 
     /// The chapter binary's options for this setting: the study's rows
     /// (`crates/measure/src/accuracy/measure.rs`, `scene_for`): one ray
-    /// through the centre has no seed; N jittered rays have theirs.
+    /// through the centre has no seed; N jittered rays have theirs. Each
+    /// as `--option=value`, so that no value is ever read as an option.
     pub fn args(&self) -> Vec<String> {
         let mut args = vec![
-            "--max-depth".to_owned(),
-            self.max_depth.to_string(),
-            "--min-weight".to_owned(),
-            self.min_weight.to_string(),
+            format!("--max-depth={}", self.max_depth),
+            format!("--min-weight={}", self.min_weight),
         ];
         match self.rays {
-            Rays::Centre => args.extend(["--samples".to_owned(), "1".to_owned()]),
-            Rays::Jittered(n) => args.extend([
-                "--samples".to_owned(),
-                n.to_string(),
-                "--seed".to_owned(),
-                self.seed.to_string(),
-            ]),
+            Rays::Centre => args.push("--samples=1".to_owned()),
+            Rays::Jittered(n) => {
+                args.push(format!("--samples={n}"));
+                args.push(format!("--seed={}", self.seed));
+            }
         }
         args
     }
@@ -159,6 +157,10 @@ pub struct Point {
     pub wall_seconds: f64,
 }
 
+/// The most bytes the reference may unpack to: the study's is 128×96
+/// (147 kB); a file of a few kB may unpack to gigabytes (all zeros).
+const MOST_REFERENCE_BYTES: u64 = 64 << 20;
+
 /// The reference the study measured against, carried with the handout:
 /// `accuracy/reference.pfm.gz` (gzipped PFM, linear values).
 pub fn reference(root: &Path) -> Result<Image, String> {
@@ -172,8 +174,15 @@ pub fn reference(root: &Path) -> Result<Image, String> {
     })?;
     let mut bytes = Vec::new();
     flate2::read::GzDecoder::new(file)
+        .take(MOST_REFERENCE_BYTES + 1)
         .read_to_end(&mut bytes)
         .map_err(|e| format!("{}: not gzip: {e}", path.display()))?;
+    if bytes.len() as u64 > MOST_REFERENCE_BYTES {
+        return Err(format!(
+            "{}: unpacks to more than {MOST_REFERENCE_BYTES} bytes: not the study's reference",
+            path.display()
+        ));
+    }
     workbook::workbench::pfm::decode(&bytes).map_err(|e| format!("{}: {e}", path.display()))
 }
 
@@ -290,8 +299,11 @@ fn render(
         return Err(chapter::failure(&output));
     }
     let stdout = String::from_utf8_lossy(&output.stdout);
-    let (rays, seconds) = reported(&stdout)
-        .ok_or_else(|| format!("your binary did not report its rays and time:\n{stdout}"))?;
+    let (rays, seconds) = reported(&stdout).ok_or_else(|| {
+        let lines: Vec<&str> = stdout.lines().collect();
+        let last = lines[lines.len().saturating_sub(8)..].join("\n");
+        format!("your binary did not report its rays and time; its output ends:\n{last}")
+    })?;
     Ok(Rendered { pfm, rays, seconds })
 }
 
@@ -335,13 +347,25 @@ mod tests {
         .unwrap();
         assert_eq!(
             s.args().join(" "),
-            "--max-depth 6 --min-weight 0.001 --samples 16 --seed 3"
+            "--max-depth=6 --min-weight=0.001 --samples=16 --seed=3"
         );
         let centre = parse(&[("max_depth", "1"), ("min_weight", "0"), ("rays", "centre")]);
         assert_eq!(
             centre.unwrap().args().join(" "),
-            "--max-depth 1 --min-weight 0 --samples 1"
+            "--max-depth=1 --min-weight=0 --samples=1"
         );
+    }
+
+    #[test]
+    fn no_value_reaches_the_binary_as_an_option() {
+        // `-0` parses as an f32 in 0..=1; passed on as `-0` it was taken by
+        // the binary's parser for an option ("unexpected argument '-0'").
+        let s = parse(&[("max_depth", "3"), ("min_weight", "-0"), ("rays", "centre")]).unwrap();
+        assert!(s.min_weight.is_sign_positive());
+        assert_eq!(s.name(), "depth 3, threshold 0, centre");
+        for arg in s.args() {
+            assert!(arg.starts_with("--") && arg.contains('='), "{arg}");
+        }
     }
 
     #[test]
@@ -393,6 +417,23 @@ mod tests {
         assert!(!is_stale(&root, &binary), "built after the last edit");
         at(&source, 3_000);
         assert!(is_stale(&root, &binary), "edited since");
+        std::fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn a_reference_that_unpacks_to_gigabytes_is_refused() {
+        use std::io::Write;
+        let root = std::env::temp_dir().join(format!("lab-bomb-{}", std::process::id()));
+        std::fs::create_dir_all(root.join(STUDY)).unwrap();
+        let file = std::fs::File::create(root.join(STUDY).join("reference.pfm.gz")).unwrap();
+        let mut gz = flate2::write::GzEncoder::new(file, flate2::Compression::fast());
+        let zeros = vec![0u8; 1 << 20];
+        for _ in 0..=(MOST_REFERENCE_BYTES >> 20) {
+            gz.write_all(&zeros).unwrap();
+        }
+        gz.finish().unwrap();
+        let error = reference(&root).map(|_| ()).unwrap_err();
+        assert!(error.contains("unpacks to more than"), "{error}");
         std::fs::remove_dir_all(&root).unwrap();
     }
 
