@@ -115,12 +115,12 @@ impl<'r> PreparedRay<'r> {
 pub struct Shear {
     /// The axes kx, ky, kz: z the one along which the ray travels fastest,
     /// x and y the others, in the order that keeps a triangle's winding.
-    axes: [usize; 3],
+    pub(super) axes: [usize; 3],
     /// sx = rd\[kx\] / rd\[kz\], sy = rd\[ky\] / rd\[kz\].
-    scale: [f32; 2],
+    pub(super) scale: [f32; 2],
     /// sz = 1 / rd\[kz\]: a corner's z in the ray's space is its distance
     /// along the ray (for the f32 estimate of t only).
-    depth: f32,
+    pub(super) depth: f32,
 }
 
 impl Shear {
