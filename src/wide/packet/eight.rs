@@ -75,7 +75,8 @@ pub fn offer_hits_of_two(
     let found = intersect(a.1, b.1, ray);
     let through = found.hit & used;
     if through != 0 {
-        let maybe = found.may_lie_within(t_min, closest.limit()) & through;
+        let range = found.t_range();
+        let maybe = range.may_lie_within(t_min, closest.limit()) & through;
         let outside = through & !maybe;
         debug_assert!(
             a.1.rightly_outside(outside & 0xf, ray.ray, t_min, closest.limit())
@@ -125,8 +126,9 @@ pub fn blocks_of_two(
     let found = intersect(a.1, b.1, ray);
     let through = found.hit & casting;
     if through != 0 {
-        let surely = found.surely_within(t_min, t_max) & through;
-        let maybe = found.may_lie_within(t_min, t_max) & through;
+        let range = found.t_range();
+        let surely = range.surely_within(t_min, t_max) & through;
+        let maybe = range.may_lie_within(t_min, t_max) & through;
         debug_assert!(
             a.1.rightly_within(surely & 0xf, ray.ray, t_min, t_max)
                 && b.1.rightly_within(surely >> 4, ray.ray, t_min, t_max)
@@ -151,19 +153,30 @@ pub fn blocks_of_two(
     })
 }
 
-/// What the eight-lane test found: as the four-lane `Found`, with its
-/// `TRange`'s bounds on t.
+/// What the eight-lane test found: as the four-lane `Found`, with what
+/// its t's bounds need.
 struct Found8 {
     hit: u32,
     on_edge: u32,
+    x: [__m256; 3],
+    y: [__m256; 3],
+    /// Each corner's p\[kz\] (the corner less r0, along the ray's main
+    /// axis), and the shear's sz in all lanes.
+    along: [__m256; 3],
+    depth: __m256,
+    u: __m256,
     v: __m256,
     w: __m256,
     determinant: __m256,
+}
+
+/// The four-lane `TRange`, eight lanes.
+struct TRange8 {
     low: __m256,
     high: __m256,
 }
 
-impl Found8 {
+impl TRange8 {
     /// [`TRange::may_lie_within`](super::TRange::may_lie_within), eight
     /// lanes.
     #[target_feature(enable = "avx2")]
@@ -183,10 +196,64 @@ impl Found8 {
         let below = _mm256_cmp_ps::<_CMP_LT_OQ>(self.high, _mm256_set1_ps(t_max));
         bits(_mm256_and_ps(above, below))
     }
+}
 
+impl Found8 {
     fn weights(&self, lane: usize) -> Weights {
         let lane_of = |v: __m256| lanes8(v)[lane];
         Weights::new(lane_of(self.v), lane_of(self.w), lane_of(self.determinant))
+    }
+
+    /// [`Triangles::t_range`], eight lanes: the same sums and products in
+    /// the same order. Worked out only where the ray passes through a
+    /// triangle, as there (its two divisions are most of its time).
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn t_range(&self) -> TRange8 {
+        const fn gamma(n: f32) -> f32 {
+            let u = f32::EPSILON / 2.0;
+            n * u / (1.0 - n * u)
+        }
+        let (add, sub, mul, max, splat) = (
+            _mm256_add_ps,
+            _mm256_sub_ps,
+            _mm256_mul_ps,
+            _mm256_max_ps,
+            _mm256_set1_ps,
+        );
+        // Shear::depth4.
+        let [z0, z1, z2] = self.along.map(|p| mul(self.depth, p));
+        let [a0, a1, a2] = self.along.map(|p| abs(p));
+        let largest = |[a, b, c]: [__m256; 3]| max(max(abs(a), abs(b)), abs(c));
+        let (max_x, max_y, max_z) = (largest(self.x), largest(self.y), largest([z0, z1, z2]));
+        let (u, v, w, determinant) = (self.u, self.v, self.w, self.determinant);
+        let max_e = largest([u, v, w]);
+        let max_pz = max(max(a0, a1), a2);
+        let delta_x = mul(splat(gamma(5.0)), add(max_x, max_pz));
+        let delta_y = mul(splat(gamma(5.0)), add(max_y, max_pz));
+        let delta_z = mul(splat(gamma(3.0)), max_z);
+        let products = add(
+            add(
+                mul(mul(splat(gamma(2.0)), max_x), max_y),
+                mul(delta_y, max_x),
+            ),
+            mul(delta_x, max_y),
+        );
+        let delta_e = mul(splat(2.0), products);
+        let sum = add(
+            add(
+                mul(mul(splat(gamma(3.0)), max_e), max_z),
+                mul(delta_e, max_z),
+            ),
+            mul(delta_z, max_e),
+        );
+        let delta_t = _mm256_div_ps(mul(splat(3.0), sum), abs(determinant));
+        let t = _mm256_div_ps(add(add(mul(u, z0), mul(v, z1)), mul(w, z2)), determinant);
+        let bound = add(mul(splat(2.0), delta_t), mul(splat(gamma(4.0)), abs(t)));
+        TRange8 {
+            low: sub(t, bound),
+            high: add(t, bound),
+        }
     }
 }
 
@@ -203,28 +270,32 @@ fn bits(mask: __m256) -> u32 {
     _mm256_movemask_ps(mask) as u32
 }
 
-/// [`Triangles::intersect`] and [`Triangles::t_range`] for `a` (lanes 0
-/// to 3) and `b` (lanes 4 to 7): the same operations, lane for lane.
+/// |v| in each lane: its sign bit cleared, as glam's `Vec4::abs`.
+#[target_feature(enable = "avx2")]
+#[inline]
+fn abs(v: __m256) -> __m256 {
+    _mm256_andnot_ps(_mm256_set1_ps(-0.0), v)
+}
+
+/// [`Triangles::intersect`] for `a` (lanes 0 to 3) and `b` (lanes 4 to
+/// 7): the same operations, lane for lane.
 #[target_feature(enable = "avx2")]
 #[inline]
 fn intersect(a: &Triangles, b: &Triangles, ray: &mut PreparedRay) -> Found8 {
     let shear = ray.shear();
     let [kx, ky, kz] = shear.axes;
     let [sx, sy] = shear.scale.map(|s| _mm256_set1_ps(s));
-    let depth = _mm256_set1_ps(shear.depth);
     let origin = ray.origin.map(|o| _mm256_set1_ps(o.x));
     let join = |low: Vec4, high: Vec4| _mm256_set_m128(high.into(), low.into());
     let corner = |c: usize| [0, 1, 2].map(|axis| join(a.corners[c][axis], b.corners[c][axis]));
     let (sub, mul) = (_mm256_sub_ps, _mm256_mul_ps);
-    let abs = |v: __m256| _mm256_andnot_ps(_mm256_set1_ps(-0.0), v);
-    // Shear::project4 and Shear::depth4.
+    // Shear::project4, and p[kz] for the bounds on t.
     let project = |corner: [__m256; 3]| {
         let p = [0, 1, 2].map(|axis| sub(corner[axis], origin[axis]));
         let (x, y) = (sub(p[kx], mul(sx, p[kz])), sub(p[ky], mul(sy, p[kz])));
-        (x, y, mul(depth, p[kz]), abs(p[kz]))
+        (x, y, p[kz])
     };
-    let [(x0, y0, z0, a0), (x1, y1, z1, a1), (x2, y2, z2, a2)] =
-        [0, 1, 2].map(|c| project(corner(c)));
+    let [(x0, y0, p0), (x1, y1, p1), (x2, y2, p2)] = [0, 1, 2].map(|c| project(corner(c)));
     let u = sub(mul(x2, y1), mul(y2, x1));
     let v = sub(mul(x0, y2), mul(y0, x2));
     let w = sub(mul(x1, y0), mul(y1, x0));
@@ -239,50 +310,16 @@ fn intersect(a: &Triangles, b: &Triangles, ray: &mut PreparedRay) -> Found8 {
     let determinant = _mm256_add_ps(_mm256_add_ps(u, v), w);
     let nonzero = _mm256_cmp_ps::<_CMP_NEQ_UQ>(determinant, zero);
     let inside = _mm256_andnot_ps(_mm256_and_ps(negative, positive), nonzero);
-    let hit = bits(inside) & !bits(on_edge) & 0xff;
-
-    // Triangles::t_range, the same sums and products in the same order.
-    const fn gamma(n: f32) -> f32 {
-        let u = f32::EPSILON / 2.0;
-        n * u / (1.0 - n * u)
-    }
-    let (add, max, splat) = (_mm256_add_ps, _mm256_max_ps, _mm256_set1_ps);
-    let largest = |[a, b, c]: [__m256; 3]| max(max(abs(a), abs(b)), abs(c));
-    let (max_x, max_y, max_z) = (
-        largest([x0, x1, x2]),
-        largest([y0, y1, y2]),
-        largest([z0, z1, z2]),
-    );
-    let max_e = largest([u, v, w]);
-    let max_pz = max(max(a0, a1), a2);
-    let delta_x = mul(splat(gamma(5.0)), add(max_x, max_pz));
-    let delta_y = mul(splat(gamma(5.0)), add(max_y, max_pz));
-    let delta_z = mul(splat(gamma(3.0)), max_z);
-    let products = add(
-        add(
-            mul(mul(splat(gamma(2.0)), max_x), max_y),
-            mul(delta_y, max_x),
-        ),
-        mul(delta_x, max_y),
-    );
-    let delta_e = mul(splat(2.0), products);
-    let sum = add(
-        add(
-            mul(mul(splat(gamma(3.0)), max_e), max_z),
-            mul(delta_e, max_z),
-        ),
-        mul(delta_z, max_e),
-    );
-    let delta_t = _mm256_div_ps(mul(splat(3.0), sum), abs(determinant));
-    let t = _mm256_div_ps(add(add(mul(u, z0), mul(v, z1)), mul(w, z2)), determinant);
-    let bound = add(mul(splat(2.0), delta_t), mul(splat(gamma(4.0)), abs(t)));
     Found8 {
-        hit,
+        hit: bits(inside) & !bits(on_edge) & 0xff,
         on_edge: bits(on_edge),
+        x: [x0, x1, x2],
+        y: [y0, y1, y2],
+        along: [p0, p1, p2],
+        depth: _mm256_set1_ps(shear.depth),
+        u,
         v,
         w,
         determinant,
-        low: sub(t, bound),
-        high: add(t, bound),
     }
 }
