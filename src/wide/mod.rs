@@ -66,47 +66,11 @@ pub struct WideBvh<'a> {
     /// In a small scene, each packet's box, tested before it (none for
     /// spheres): [`Packet::bounds`].
     flat_boxes: Vec<Option<Aabb>>,
-    /// How many primitives the closest hit's walk tests at once (read only
-    /// on x86-64).
-    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
-    lanes: Lanes,
-}
-
-/// How many triangles the closest hit's walk tests in one test: four
-/// (SSE, every x86-64 CPU; any other CPU through glam's fallback), or
-/// eight, a leaf's two packets at once, where the CPU has AVX2
-/// (`packet/eight.rs`). The answers are the same bits either way.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Lanes {
-    Four,
-    Eight,
-}
-
-impl Lanes {
-    /// Eight where this CPU has AVX2 and `RAYBOOK_NO_AVX2` is unset, else four.
-    pub fn detect() -> Lanes {
-        #[cfg(target_arch = "x86_64")]
-        if packet::eight::available() {
-            return Lanes::Eight;
-        }
-        Lanes::Four
-    }
 }
 
 impl<'a> WideBvh<'a> {
-    /// Builds chapter 8's binary tree over `objects` and collapses it; its
-    /// leaves are tested in as many lanes as the CPU has ([`Lanes::detect`]).
+    /// Builds chapter 8's binary tree over `objects` and collapses it.
     pub fn build(objects: &'a [Object]) -> WideBvh<'a> {
-        Self::build_with(objects, Lanes::detect())
-    }
-
-    /// [`build`](Self::build) with the given lanes; `Lanes::Eight` only if
-    /// [`Lanes::detect`] gives it (else four).
-    pub fn build_with(objects: &'a [Object], lanes: Lanes) -> WideBvh<'a> {
-        let lanes = match lanes {
-            Lanes::Eight => Lanes::detect(),
-            Lanes::Four => Lanes::Four,
-        };
         let (mut items, planes) = build::items(objects);
         let small = items.len() <= FLAT_MAX;
         let binary = if small {
@@ -147,7 +111,6 @@ impl<'a> WideBvh<'a> {
             nodes,
             packets,
             planes,
-            lanes,
         }
     }
 

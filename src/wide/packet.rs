@@ -20,9 +20,6 @@
 //!
 //! Cones are rare (the SPD's rings and tree) and stay one to a packet.
 
-#[cfg(target_arch = "x86_64")]
-pub mod eight;
-
 use glam::{BVec4A, Vec4};
 
 use super::closest::Offer;

@@ -115,12 +115,12 @@ impl<'r> PreparedRay<'r> {
 pub struct Shear {
     /// The axes kx, ky, kz: z the one along which the ray travels fastest,
     /// x and y the others, in the order that keeps a triangle's winding.
-    pub(super) axes: [usize; 3],
+    axes: [usize; 3],
     /// sx = rd\[kx\] / rd\[kz\], sy = rd\[ky\] / rd\[kz\].
-    pub(super) scale: [f32; 2],
+    scale: [f32; 2],
     /// sz = 1 / rd\[kz\]: a corner's z in the ray's space is its distance
     /// along the ray (for the f32 estimate of t only).
-    pub(super) depth: f32,
+    depth: f32,
 }
 
 impl Shear {

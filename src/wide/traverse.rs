@@ -8,8 +8,6 @@ use super::WideBvh;
 use super::closest::Offer;
 use super::node::{Child, Node4, Slabs};
 use super::packet::Packet;
-#[cfg(target_arch = "x86_64")]
-use super::packet::eight;
 use super::primitive::PreparedRay;
 
 /// Room for the lanes still to visit: each level down pops one entry and
@@ -26,12 +24,6 @@ impl WideBvh<'_> {
         if self.flat {
             return self.offer_flat(ray, t_min, closest);
         }
-        #[cfg(target_arch = "x86_64")]
-        if self.lanes == super::Lanes::Eight {
-            // SAFETY: `Lanes::Eight` is chosen only where the CPU has AVX2
-            // (`eight::available()`).
-            return unsafe { self.closest_in_tree_eight(ray, t_min, closest) };
-        }
         self.closest_in_tree(ray, t_min, closest);
     }
 
@@ -39,28 +31,6 @@ impl WideBvh<'_> {
     /// would make every caller's frame several kilobytes, a small scene's too.
     #[inline(never)]
     fn closest_in_tree(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
-        self.walk_closest::<false>(ray, t_min, closest);
-    }
-
-    /// [`closest_in_tree`](Self::closest_in_tree) compiled for AVX2, with a
-    /// leaf of two packets of triangles tested in eight lanes.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    #[inline(never)]
-    fn closest_in_tree_eight(&self, ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
-        self.walk_closest::<true>(ray, t_min, closest);
-    }
-
-    /// The closest hit's walk: each leaf's packets four lanes at a time, or
-    /// (`EIGHT`, only where the CPU has AVX2) a leaf of two packets of
-    /// triangles in one test of eight lanes.
-    #[inline(always)]
-    fn walk_closest<const EIGHT: bool>(
-        &self,
-        ray: &mut PreparedRay,
-        t_min: f32,
-        closest: &mut impl Offer,
-    ) {
         let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<(Child, f32), STACK>::new();
         stack.push((Child::Node(0), t_min));
@@ -75,15 +45,7 @@ impl WideBvh<'_> {
                 }
                 Child::Leaf { start, count } => {
                     let (start, end) = (start as usize, (start + count) as usize);
-                    let packets = &self.packets[start..end];
-                    #[cfg(target_arch = "x86_64")]
-                    if EIGHT && let Some(two) = eight::two_of_triangles(packets) {
-                        // SAFETY: EIGHT only in `closest_in_tree_eight`,
-                        // which runs only where the CPU has AVX2.
-                        unsafe { eight::offer_hits_of_two(two, ray, t_min, closest) };
-                        continue;
-                    }
-                    offer_leaf(packets, ray, t_min, closest);
+                    offer_leaf(&self.packets[start..end], ray, t_min, closest);
                 }
                 Child::Empty => {}
             }
@@ -99,11 +61,6 @@ impl WideBvh<'_> {
         if self.flat {
             return self.blocks_flat(ray, t_min, t_max);
         }
-        #[cfg(target_arch = "x86_64")]
-        if self.lanes == super::Lanes::Eight {
-            // SAFETY: as in `closest`.
-            return unsafe { self.any_in_tree_eight(ray, t_min, t_max) };
-        }
         self.any_in_tree(ray, t_min, t_max)
     }
 
@@ -111,23 +68,6 @@ impl WideBvh<'_> {
     /// [`closest_in_tree`](Self::closest_in_tree).
     #[inline(never)]
     fn any_in_tree(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
-        self.walk_any::<false>(ray, t_min, t_max)
-    }
-
-    /// [`any_in_tree`](Self::any_in_tree) compiled for AVX2, with a leaf of
-    /// two packets of triangles tested in eight lanes.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    #[inline(never)]
-    fn any_in_tree_eight(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
-        self.walk_any::<true>(ray, t_min, t_max)
-    }
-
-    /// A shadow ray's walk: each leaf's packets four lanes at a time, or
-    /// (`EIGHT`, only where the CPU has AVX2) a leaf of two packets of
-    /// triangles in one test of eight lanes.
-    #[inline(always)]
-    fn walk_any<const EIGHT: bool>(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
         let slabs = Slabs::new(ray);
         let mut stack = ArrayVec::<u32, STACK>::new();
         stack.push(0);
@@ -141,17 +81,7 @@ impl WideBvh<'_> {
                     Child::Node(child) => stack.push(child),
                     Child::Leaf { start, count } => {
                         let (start, end) = (start as usize, (start + count) as usize);
-                        let packets = &self.packets[start..end];
-                        #[cfg(target_arch = "x86_64")]
-                        if EIGHT && let Some(two) = eight::two_of_triangles(packets) {
-                            // SAFETY: EIGHT only in `any_in_tree_eight`,
-                            // which runs only where the CPU has AVX2.
-                            if unsafe { eight::blocks_of_two(two, ray, t_min, t_max) } {
-                                return true;
-                            }
-                            continue;
-                        }
-                        if blocks(packets, ray, t_min, t_max) {
+                        if blocks(&self.packets[start..end], ray, t_min, t_max) {
                             return true;
                         }
                     }
@@ -189,10 +119,8 @@ impl WideBvh<'_> {
     }
 }
 
-/// Offers `closest` the hits of a leaf's packets. Always inlined: called
-/// from both walks (four lanes and eight), the compiler otherwise keeps it
-/// out of line, and the four-lane walk took 2.6% more instructions (balls-4).
-#[inline(always)]
+/// Offers `closest` the hits of a leaf's packets.
+#[inline]
 fn offer_leaf(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
     for packet in packets {
         packet.offer_hits(ray, t_min, closest);
@@ -200,8 +128,7 @@ fn offer_leaf(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, closest: &m
 }
 
 /// Does a primitive of `packets` cast a shadow on the ray in (t_min, t_max)?
-/// Always inlined, as [`offer_leaf`].
-#[inline(always)]
+#[inline]
 fn blocks(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
     packets.iter().any(|p| p.blocks(ray, t_min, t_max))
 }
