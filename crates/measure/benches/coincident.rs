@@ -19,8 +19,8 @@
 //! For instruction counts, which do not move with the machine's load, set
 //! `BENCH_WAY` to `nearest`, `rule` or `none` (and optionally `BENCH_SCENE`
 //! to one scene's name): each scene's rays are then traced once that way
-//! only, with no table, under
-//! `valgrind --tool=callgrind target/release/deps/coincident-…`. The rule's
+//! only (`BENCH_ROUNDS` times, for a sampling profiler), with no table,
+//! under `valgrind --tool=callgrind target/release/deps/coincident-…`. The rule's
 //! cost in instructions is (rule − none) / (nearest − none): `none` counts
 //! what loading the scene and building its tree take.
 
@@ -149,18 +149,17 @@ fn one_way(way: &str) {
         }
         let rays = primary_rays(&scene);
         let wide = WideBvh::build(&scene.objects);
-        let hits = match way {
-            "nearest" => rays
-                .iter()
-                .filter_map(|r| wide.nearest_hit(r, 0.0, INF))
-                .count(),
-            "rule" => rays
-                .iter()
-                .filter_map(|r| wide.closest_hit(r, 0.0, INF))
-                .count(),
-            "none" => 0,
+        let trace = |ray: &Ray| match way {
+            "nearest" => wide.nearest_hit(ray, 0.0, INF),
+            "rule" => wide.closest_hit(ray, 0.0, INF),
+            "none" => None,
             other => panic!("BENCH_WAY is nearest, rule or none, not {other}"),
         };
+        let times = std::env::var("BENCH_ROUNDS").map_or(1, |n| n.parse().unwrap());
+        let mut hits = 0;
+        for _ in 0..times {
+            hits = rays.iter().filter_map(trace).count();
+        }
         println!("{name}: {way}, {hits} hits");
     }
 }
