@@ -139,7 +139,11 @@ fn blocks(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, t_max: f32) -> 
 ///
 /// The lanes go onto the stack as they come, then the (at most four) new
 /// entries are put in order where they are, by insertion sort.
-#[inline]
+///
+/// Always inlined into the walk: left to itself, the compiler keeps it out
+/// of line since the walk offers the rule's hits (`rule.rs`), and the call
+/// was a fifth of the closest hit's time (book/appendix/performance.md).
+#[inline(always)]
 fn push_nearest_last(
     node: &Node4,
     ray: &Slabs,

@@ -15,6 +15,14 @@
 //! per-round ratios is printed; here the time is the thread's CPU time, and
 //! each way goes first in every other round (on a machine shared with
 //! other builds, wall times and a fixed order moved the ratios by ±10%).
+//!
+//! For instruction counts, which do not move with the machine's load, set
+//! `BENCH_WAY` to `nearest`, `rule` or `none` (and optionally `BENCH_SCENE`
+//! to one scene's name): each scene's rays are then traced once that way
+//! only (`BENCH_ROUNDS` times, for a sampling profiler), with no table,
+//! under `valgrind --tool=callgrind target/release/deps/coincident-…`. The rule's
+//! cost in instructions is (rule − none) / (nearest − none): `none` counts
+//! what loading the scene and building its tree take.
 
 use std::hint::black_box;
 use std::path::Path;
@@ -130,7 +138,36 @@ fn second_looks(rays: &[Ray], objects: &[Object]) -> f64 {
     looks as f64 / rays.len() as f64
 }
 
+/// `BENCH_WAY`'s tracing, for callgrind: each scene (or `BENCH_SCENE`'s
+/// only) built, and its rays traced once by the nearest hit, by the rule,
+/// or not at all.
+fn one_way(way: &str) {
+    let only = std::env::var("BENCH_SCENE").ok();
+    for (name, scene) in scenes() {
+        if only.as_deref().is_some_and(|only| only != name) {
+            continue;
+        }
+        let rays = primary_rays(&scene);
+        let wide = WideBvh::build(&scene.objects);
+        let trace = |ray: &Ray| match way {
+            "nearest" => wide.nearest_hit(ray, 0.0, INF),
+            "rule" => wide.closest_hit(ray, 0.0, INF),
+            "none" => None,
+            other => panic!("BENCH_WAY is nearest, rule or none, not {other}"),
+        };
+        let times = std::env::var("BENCH_ROUNDS").map_or(1, |n| n.parse().unwrap());
+        let mut hits = 0;
+        for _ in 0..times {
+            hits = rays.iter().filter_map(trace).count();
+        }
+        println!("{name}: {way}, {hits} hits");
+    }
+}
+
 fn main() {
+    if let Ok(way) = std::env::var("BENCH_WAY") {
+        return one_way(&way);
+    }
     println!("| scene | tracer | nearest hit | with the rule | ratio | rays that look twice |");
     println!("| --- | --- | ---: | ---: | ---: | ---: |");
     for (name, scene) in scenes() {
