@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use indicatif::ProgressDrawTarget;
 
 use crate::chapters::{self, ChapterEntry, Criterion};
 use crate::ray_tree::{RayNode, TracerInfo};
@@ -16,8 +16,11 @@ use ch00_toolkit::{Image, Scene, Stats};
 use scene_files::SceneError;
 use scene_files::{Effect, Effects};
 
+mod output;
 mod pixel;
 mod values;
+
+pub use output::{end_quietly_when_output_closes, progress_bar, report};
 
 pub use pixel::{Pixel, TreeView};
 use pixel::{explain_pixel, pixel};
@@ -284,21 +287,6 @@ impl std::fmt::Display for EffectPlan {
     }
 }
 
-/// A progress bar over the rows of a render; hidden when `quiet` (and by
-/// indicatif itself when the output is not a terminal).
-pub fn progress_bar(rows: u32, quiet: bool) -> ProgressBar {
-    if quiet {
-        return ProgressBar::hidden();
-    }
-    let bar = ProgressBar::new(rows as u64);
-    let style =
-        ProgressStyle::with_template("{spinner} rendering [{bar:40}] {pos}/{len} rows, {eta} left")
-            .expect("a valid template")
-            .progress_chars("=> ");
-    bar.set_style(style);
-    bar
-}
-
 /// What a render made.
 pub struct Rendered {
     pub image: Image,
@@ -429,35 +417,4 @@ pub fn with_threads<T: Send>(
         .num_threads(n as usize)
         .build()?;
     Ok(pool.install(work))
-}
-
-/// Prints what was rendered, where, how big, how long and how many rays.
-pub fn report(chapter: &Chapter, scene: &str, out: &std::path::Path, r: &Rendered) {
-    println!(
-        "chapter {} ({}): rendered {scene}\nwrote {} ({}×{} pixels) in {:.3} s\n{}",
-        chapter.entry().folder,
-        chapter.entry().title,
-        out.display(),
-        r.image.width,
-        r.image.height,
-        r.seconds.as_secs_f64(),
-        r.stats
-    );
-}
-
-/// Lets the process end quietly when whoever reads its output goes away, as
-/// `raybook render … | head -1` does after one line.
-///
-/// A Rust program ignores the signal (SIGPIPE) that ends other command-line
-/// tools then, so its next `println!` would panic ("failed printing to
-/// stdout: Broken pipe"). Restoring the signal's default action makes the
-/// process end silently instead, like `cat` or `grep`. Every binary calls
-/// this first (chapter binaries through [`run_or_explain`]).
-pub fn end_quietly_when_output_closes() {
-    #[cfg(unix)]
-    // SAFETY: signal() only sets the process's action for SIGPIPE back to
-    // the default; no handler of ours runs.
-    unsafe {
-        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
-    }
 }
