@@ -23,17 +23,17 @@ use crate::toolkit::{DVec3, Vec3};
 ///   centre to the point of the ray's line closest to it: the line meets
 ///   the sphere when that point is inside. Both are small, so nothing large
 ///   cancels.
-/// * Where: of the two roots, the one farther from the origin's side is
-///   computed without cancellation (q / |rd|²), and the other from the
-///   product of the two roots (`power` / |rd|²): it is `power` / q.
+/// * Where: the root of the larger size is computed without cancellation
+///   (q / |rd|²), and the other from the product of the two roots
+///   (`power` / |rd|²): it is `power` / q.
 ///
 /// (Haines, Günther and Akenine-Möller, "Precision Improvements for
 /// Ray/Sphere Intersection", Ray Tracing Gems, chapter 7.)
 ///
 /// The formula is evaluated in f64, because f32 cannot even hold the
 /// differences it starts from: 10⁴ units from the origin f32 steps by about
-/// 10⁻³, so f, `along` and `power` would be off by a tenth of a sphere of radius 0.01,
-/// or of a gap of 0.01 between the ray's origin and a huge sphere. In f64
+/// 10⁻³, so f, `along` and `power` would be off by a tenth of a sphere of
+/// radius 0.01, or of a gap of 0.01 between the ray's origin and a huge sphere. In f64
 /// every f32 input and every product of two of them is exact, f nearly so,
 /// and the stable formula keeps that precision to the end.
 pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> {
@@ -47,14 +47,14 @@ pub fn sphere_roots(center: Vec3, radius: f32, ray: &Ray) -> Option<(f32, f32)> 
     } = Quadratic::of(center, radius, ray);
     // h: from the centre to the line's point closest to it.
     let h = f - (along / speed2) * rd;
-    // |rd|² times the squared half chord ρ² − |h|²: ≥ 0 when that point is
-    // inside, and nothing large cancels.
+    // |rd|² times ρ² − |h|², the squared half chord: ≥ 0 when that point
+    // is inside, and nothing large cancels.
     let half_chord2 = speed2 * (rho * rho - h.dot(h));
     if half_chord2 < 0.0 {
         return None;
     }
-    // For along = 0 and Δ = 0 (a tangent line from a point on the sphere),
-    // q = 0 and power/q is 0/0: min and max drop that NaN and keep the
+    // For along = 0 and a half chord of 0 (a tangent line from a point on
+    // the sphere), q = 0 and power/q is 0/0: min and max drop that NaN and keep the
     // double root 0.
     let q = -(along + half_chord2.sqrt().copysign(along));
     let (t0, t1) = ((power / q) as f32, (q / speed2) as f32);
