@@ -136,8 +136,9 @@ impl SlabTest<4> for Slabs {
     ///
     /// The ray's direction tells which face of each slab comes first
     /// ([`Slabs::near_face`]), so the near and far distances need no
-    /// min/max per slab, only across the three.
-    #[inline]
+    /// min/max per slab, only across the three. Always inlined into the
+    /// walks, as in one function with them before they were generic.
+    #[inline(always)]
     fn enter(&self, node: &Node<4>, t_min: f32, t_max: f32) -> ([f32; 4], u32) {
         let slab = |axis: usize, face: usize| {
             (Vec4::from_array(node.bounds[face + axis]) - self.origin[axis]) * self.inverse[axis]

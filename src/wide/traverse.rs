@@ -179,8 +179,9 @@ pub(super) fn any_in_tree<const W: usize, const STACK: usize>(
     false
 }
 
-/// Offers `closest` the hits of a leaf's packets.
-#[inline]
+/// Offers `closest` the hits of a leaf's packets. Always inlined, as the
+/// walks are (left to itself, the compiler keeps it out of line in them).
+#[inline(always)]
 fn offer_leaf(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, closest: &mut impl Offer) {
     for packet in packets {
         packet.offer_hits(ray, t_min, closest);
@@ -188,9 +189,16 @@ fn offer_leaf(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, closest: &m
 }
 
 /// Does a primitive of `packets` cast a shadow on the ray in (t_min, t_max)?
-#[inline]
+/// Always inlined, as [`offer_leaf`].
+#[inline(always)]
 fn blocks(packets: &[Packet], ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
-    packets.iter().any(|p| p.blocks(ray, t_min, t_max))
+    // A loop, not `Iterator::any`, which stayed a call of its own.
+    for packet in packets {
+        if packet.blocks(ray, t_min, t_max) {
+            return true;
+        }
+    }
+    false
 }
 
 /// Pushes the lanes of `node` that the ray enters in [t_min, limit], the
