@@ -1,4 +1,4 @@
-//! The complete tracer's four-wide BVH answers exactly as brute force does:
+//! The complete tracer's wide BVH answers exactly as brute force does:
 //! the same hits to the last bit, so the same pictures and ray counts.
 
 mod common;

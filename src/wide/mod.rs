@@ -1,10 +1,21 @@
-//! The complete tracer's accelerator: chapter 8's BVH made four wide.
+//! The complete tracer's accelerator: chapter 8's BVH made eight wide
+//! where the CPU has AVX2, four wide elsewhere.
 //!
 //! Chapter 8 builds a binary tree and tests one box per step. This module
-//! takes that same tree (the same binned-SAH build) and collapses it, two
-//! levels into one, to nodes of four children; a step then tests four boxes
-//! in one slab test of four lanes (`node.rs`); subtrees of up to eight
-//! primitives become one leaf, so that its packets are full. Beside that:
+//! takes that same tree (the same binned-SAH build) and collapses it
+//! (`collapse.rs`) to nodes of eight children (about three levels into
+//! one) or four (two into one); a step then tests all of a node's boxes in
+//! one slab test of eight AVX2 lanes (`eight.rs`) or four SSE lanes
+//! (`node.rs`). Why eight: a ray takes about half the steps down a tree
+//! half as deep, and a step's eight boxes cost one AVX instruction where
+//! four cost one SSE instruction (measured in book/appendix/performance.md).
+//! The width is chosen once per tree ([`Width::detect`]): eight where
+//! `is_x86_feature_detected!("avx2")` says so and `RAYBOOK_NO_AVX2` is
+//! unset; four on other CPUs (and on other targets, where the eight-wide
+//! code is not compiled). Both give the same bytes, box for box: the slab
+//! tests do the same operations in the same order, lane by lane.
+//! Subtrees of up to eight primitives become one leaf, so that its packets
+//! are full. Beside that:
 //! - a leaf's primitives are stored in packets of four spheres or four
 //!   triangles, lane by lane, and tested four at a time (`packet.rs`): only
 //!   their geometry, not chapter 8's copy of the whole `Shape`. The scene's
