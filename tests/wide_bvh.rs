@@ -369,7 +369,8 @@ fn the_complete_tracer_makes_the_same_bytes_on_any_number_of_threads() {
 }
 
 /// The eight-wide tree (AVX2) and the four-wide one give the same bytes and
-/// statistics on every SPD scene; on a CPU without AVX2 both are four wide.
+/// statistics on every SPD scene; on a CPU without AVX2 both are four wide
+/// (`build_with` does not read `RAYBOOK_NO_AVX2`).
 #[test]
 fn eight_wide_and_four_wide_trees_give_the_same_bytes_on_the_spd_scenes() {
     use raybook::wide::Width;

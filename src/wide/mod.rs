@@ -133,9 +133,10 @@ impl<'a> WideBvh<'a> {
     }
 
     /// [`build`](Self::build) with nodes of `width`, or four where eight
-    /// is asked for and [`Width::detect`] would not give it.
+    /// is asked for and the CPU has no AVX2 (`RAYBOOK_NO_AVX2` is not read
+    /// here: a test compares both widths whatever it says).
     pub fn build_with(objects: &'a [Object], width: Width) -> WideBvh<'a> {
-        let eight = width == Width::Eight && Width::detect() == Width::Eight;
+        let eight = width == Width::Eight && has_avx2();
         let (mut items, planes) = build::items(objects);
         let small = items.len() <= FLAT_MAX;
         let binary = if small {
