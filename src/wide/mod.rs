@@ -6,9 +6,10 @@
 //! (`collapse.rs`) to nodes of eight children (about three levels into
 //! one) or four (two into one); a step then tests all of a node's boxes in
 //! one slab test of eight AVX2 lanes (`eight.rs`) or four SSE lanes
-//! (`node.rs`). Why eight: a ray takes about half the steps down a tree
-//! half as deep, and a step's eight boxes cost one AVX instruction where
-//! four cost one SSE instruction (measured in book/appendix/performance.md).
+//! (`node.rs`). Why eight: a ray takes fewer steps down a shallower tree
+//! (about half as many nodes), and a step's eight boxes cost one AVX
+//! instruction where four cost one SSE instruction: 8 to 15% fewer
+//! instructions, 7 to 16% less time (book/appendix/performance.md).
 //! The width is chosen once per tree ([`Width::detect`]): eight where
 //! `is_x86_feature_detected!("avx2")` says so and `RAYBOOK_NO_AVX2` is
 //! unset; four on other CPUs (and on other targets, where the eight-wide
