@@ -1,8 +1,8 @@
 //! raybook: the complete tracer of the workbook.
 //!
 //! The tracer is the most advanced chapter's ([`tracer`]), chosen once per
-//! scene by the effects it calls for, and traced against a four-wide BVH
-//! ([`wide`], chapter 8's tree collapsed). The `raybook` command that
+//! scene by the effects it calls for, and traced against a wide BVH (eight
+//! lanes with AVX2, else four: [`wide`], chapter 8's tree collapsed). The `raybook` command that
 //! renders with it and measures it lives in `crates/measure`; the
 //! student's tools in `crates/workbook`.
 
@@ -25,7 +25,7 @@ pub const CHAPTER: Chapter = tracer::CHAPTER;
 
 /// Renders a scene with the complete tracer and the scene's own criteria,
 /// in the camera's space ([`camera_relative`]), its rays traced against a
-/// four-wide BVH of the scene ([`wide`], chapter 8's tree collapsed), by
+/// wide BVH of the scene ([`wide`], chapter 8's tree collapsed), by
 /// the tracer the scene calls for ([`tracer::render_complete`]).
 pub fn render(scene: &Scene, on_row: impl Fn() + Sync) -> (Image, Stats) {
     let scene = camera_relative(scene);
@@ -75,8 +75,8 @@ pub fn camera_relative(scene: &Scene) -> Cow<'_, Scene> {
     Cow::Owned(moved)
 }
 
-/// What the complete tracer traces rays against: the four-wide BVH of the
-/// scene's objects.
+/// What the complete tracer traces rays against: the wide BVH of the
+/// scene's objects (eight wide where the CPU has AVX2, else four).
 pub fn world(scene: &Scene) -> wide::WideBvh<'_> {
     wide::WideBvh::build(&scene.objects)
 }

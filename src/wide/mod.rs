@@ -1,10 +1,22 @@
-//! The complete tracer's accelerator: chapter 8's BVH made four wide.
+//! The complete tracer's accelerator: chapter 8's BVH made eight wide
+//! where the CPU has AVX2, four wide elsewhere.
 //!
 //! Chapter 8 builds a binary tree and tests one box per step. This module
-//! takes that same tree (the same binned-SAH build) and collapses it, two
-//! levels into one, to nodes of four children; a step then tests four boxes
-//! in one slab test of four lanes (`node.rs`); subtrees of up to eight
-//! primitives become one leaf, so that its packets are full. Beside that:
+//! takes that same tree (the same binned-SAH build) and collapses it
+//! (`collapse.rs`) to nodes of eight children (about three levels into
+//! one) or four (two into one); a step then tests all of a node's boxes in
+//! one slab test of eight AVX2 lanes (`eight.rs`) or four SSE lanes
+//! (`node.rs`). Why eight: a ray takes fewer steps down a shallower tree
+//! (about half as many nodes), and a step's eight boxes cost one AVX
+//! instruction where four cost one SSE instruction: 8 to 15% fewer
+//! instructions, 7 to 16% less time (book/appendix/performance.md).
+//! The width is chosen once per tree ([`Width::detect`]): eight where
+//! `is_x86_feature_detected!("avx2")` says so and `RAYBOOK_NO_AVX2` is
+//! unset; four on other CPUs (and on other targets, where the eight-wide
+//! code is not compiled). Both give the same bytes, box for box: the slab
+//! tests do the same operations in the same order, lane by lane.
+//! Subtrees of up to eight primitives become one leaf, so that its packets
+//! are full. Beside that:
 //! - a leaf's primitives are stored in packets of four spheres or four
 //!   triangles, lane by lane, and tested four at a time (`packet.rs`): only
 //!   their geometry, not chapter 8's copy of the whole `Shape`. The scene's
@@ -32,6 +44,9 @@
 //! What it buys is measured in chapter 8's text and book/appendix/performance.md.
 
 mod closest;
+mod collapse;
+#[cfg(target_arch = "x86_64")]
+mod eight;
 mod node;
 mod packet;
 mod primitive;
@@ -46,16 +61,17 @@ use ch08_bvh::build::{self, Item};
 use crate::toolkit::scene::{Object, Shape};
 use crate::tracer::{Hit, Ray, World, coincident_range, hit_with_weights};
 use closest::{Closest, Found, Offer};
-use node::{Child, Node4};
+use collapse::collapse;
+use node::Node;
 use packet::Packet;
 use primitive::{PreparedRay, Primitive, Weights};
 
-/// A four-wide bounding volume hierarchy over a scene's objects.
+/// A four- or eight-wide bounding volume hierarchy over a scene's objects.
 #[derive(Debug, Clone)]
 pub struct WideBvh<'a> {
     objects: &'a [Object],
     /// The root is node 0 (if there is any bounded object).
-    nodes: Vec<Node4>,
+    tree: Tree,
     /// The leaves' primitives, in packets of four of a kind, leaf after
     /// leaf; a leaf's lane in a node gives its first packet and how many.
     packets: Vec<Packet>,
@@ -68,9 +84,60 @@ pub struct WideBvh<'a> {
     flat_boxes: Vec<Option<Aabb>>,
 }
 
+/// The tree's nodes: four lanes each, or eight.
+#[derive(Debug, Clone)]
+enum Tree {
+    Four(Vec<Node<4>>),
+    /// Built only where the CPU has AVX2 (`eight.rs` relies on it).
+    #[cfg(target_arch = "x86_64")]
+    Eight(Vec<Node<8>>),
+}
+
+/// How many children a node of the tree has, so how many boxes a slab test
+/// tests at once: four (SSE on every x86-64 CPU, glam's fallback on any
+/// other), or eight where the CPU has AVX2 (`eight.rs`). The pictures are
+/// the same bytes either way.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Width {
+    Four,
+    Eight,
+}
+
+impl Width {
+    /// Eight where this CPU has AVX2 and the variable `RAYBOOK_NO_AVX2` is
+    /// unset (CI sets it to check the four-wide path on an AVX2 machine);
+    /// else four.
+    pub fn detect() -> Width {
+        if std::env::var_os("RAYBOOK_NO_AVX2").is_none() && has_avx2() {
+            Width::Eight
+        } else {
+            Width::Four
+        }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+fn has_avx2() -> bool {
+    eight::has_avx2()
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn has_avx2() -> bool {
+    false
+}
+
 impl<'a> WideBvh<'a> {
-    /// Builds chapter 8's binary tree over `objects` and collapses it.
+    /// Builds chapter 8's binary tree over `objects` and collapses it to
+    /// nodes as wide as the CPU allows ([`Width::detect`]).
     pub fn build(objects: &'a [Object]) -> WideBvh<'a> {
+        Self::build_with(objects, Width::detect())
+    }
+
+    /// [`build`](Self::build) with nodes of `width`, or four where eight
+    /// is asked for and the CPU has no AVX2 (`RAYBOOK_NO_AVX2` is not read
+    /// here: a test compares both widths whatever it says).
+    pub fn build_with(objects: &'a [Object], width: Width) -> WideBvh<'a> {
+        let eight = width == Width::Eight && has_avx2();
         let (mut items, planes) = build::items(objects);
         let small = items.len() <= FLAT_MAX;
         let binary = if small {
@@ -86,19 +153,12 @@ impl<'a> WideBvh<'a> {
             })
             .collect();
         drop(items);
-        let mut nodes = Vec::with_capacity(binary.len() / 2 + 1);
         let mut packets = Vec::with_capacity(primitives.len() / 2 + 1);
-        if !binary.is_empty() {
-            let mut tree = Collapse {
-                spans: spans(&binary),
-                lanes_before: lanes_before(&primitives),
-                binary: &binary,
-                primitives: &primitives,
-                nodes: &mut nodes,
-                packets: &mut packets,
-            };
-            tree.node(0);
-        }
+        let tree = if eight && !small {
+            Self::eight_wide(&binary, &primitives, &mut packets)
+        } else {
+            Tree::Four(collapse(&binary, &primitives, &mut packets))
+        };
         let flat_boxes = if small {
             packets.iter().map(|p| p.bounds(objects)).collect()
         } else {
@@ -108,15 +168,46 @@ impl<'a> WideBvh<'a> {
             objects,
             flat: small,
             flat_boxes,
-            nodes,
+            tree,
             packets,
             planes,
         }
     }
 
-    /// Number of four-wide nodes.
+    #[cfg(target_arch = "x86_64")]
+    fn eight_wide(
+        binary: &[build::Node],
+        primitives: &[Primitive],
+        packets: &mut Vec<Packet>,
+    ) -> Tree {
+        Tree::Eight(collapse(binary, primitives, packets))
+    }
+
+    #[cfg(not(target_arch = "x86_64"))]
+    fn eight_wide(
+        binary: &[build::Node],
+        primitives: &[Primitive],
+        packets: &mut Vec<Packet>,
+    ) -> Tree {
+        Tree::Four(collapse(binary, primitives, packets))
+    }
+
+    /// Number of nodes (four or eight wide).
     pub fn node_count(&self) -> usize {
-        self.nodes.len()
+        match &self.tree {
+            Tree::Four(nodes) => nodes.len(),
+            #[cfg(target_arch = "x86_64")]
+            Tree::Eight(nodes) => nodes.len(),
+        }
+    }
+
+    /// How many children a node has.
+    pub fn width(&self) -> Width {
+        match &self.tree {
+            Tree::Four(_) => Width::Four,
+            #[cfg(target_arch = "x86_64")]
+            Tree::Eight(_) => Width::Eight,
+        }
     }
 
     fn shape(&self, object: usize) -> &Shape {
@@ -143,130 +234,6 @@ fn flat(items: &[Item]) -> Vec<build::Node> {
         })
         .into_iter()
         .collect()
-}
-
-/// Chapter 8's binary tree, being collapsed into four-wide nodes and the
-/// leaves' packets.
-struct Collapse<'t> {
-    binary: &'t [build::Node],
-    /// Each binary node's primitives: (first, count).
-    spans: Vec<(u32, u32)>,
-    /// For each i, the packet lanes that primitives[..i] fill on their own:
-    /// one for a sphere or a triangle, four for a cone (a packet of its
-    /// own).
-    lanes_before: Vec<u32>,
-    /// In the order of the binary tree's leaves.
-    primitives: &'t [Primitive],
-    nodes: &'t mut Vec<Node4>,
-    packets: &'t mut Vec<Packet>,
-}
-
-impl Collapse<'_> {
-    /// Appends the four-wide node standing for binary node `index` and the
-    /// subtree below it; returns its index.
-    ///
-    /// Its lanes start as the binary node's two children. While a lane
-    /// holds an inner node and a lane is free, the inner child with the
-    /// largest box (the one rays most often enter) is replaced by its own
-    /// two children. A binary leaf at the root becomes a node with one leaf
-    /// lane.
-    fn node(&mut self, index: usize) -> u32 {
-        let binary = self.binary;
-        let at = self.nodes.len();
-        self.nodes.push(Node4::EMPTY);
-        let mut lanes = if self.is_leaf(index) {
-            vec![index]
-        } else {
-            vec![index + 1, binary[index].start as usize]
-        };
-        while lanes.len() < 4 {
-            let inner = lanes
-                .iter()
-                .enumerate()
-                .filter(|&(_, &n)| !self.is_leaf(n))
-                .max_by(|a, b| area(binary, *a.1).total_cmp(&area(binary, *b.1)));
-            let Some((lane, &n)) = inner else { break };
-            lanes.swap_remove(lane);
-            lanes.extend([n + 1, binary[n].start as usize]);
-        }
-        for (lane, &n) in lanes.iter().enumerate() {
-            let child = if self.is_leaf(n) {
-                let (start, count) = self.spans[n];
-                self.leaf(start, count)
-            } else {
-                Child::Node(self.node(n))
-            };
-            self.nodes[at].set(lane, binary[n].bounds, child);
-        }
-        at as u32
-    }
-
-    /// Is binary node `n` a leaf here: a leaf of chapter 8's tree, or a
-    /// subtree whose primitives fill at most [`LEAF_MAX`] lanes?
-    fn is_leaf(&self, n: usize) -> bool {
-        let (first, count) = self.spans[n];
-        let (first, end) = (first as usize, (first + count) as usize);
-        self.binary[n].count > 0 || self.lanes_before[end] - self.lanes_before[first] <= LEAF_MAX
-    }
-
-    /// The packets of the binary leaf of `count` primitives from `start`.
-    fn leaf(&mut self, start: u32, count: u32) -> Child {
-        let first = self.packets.len();
-        let (start, end) = (start as usize, (start + count) as usize);
-        packet::pack(&self.primitives[start..end], self.packets);
-        Child::Leaf {
-            start: first as u32,
-            count: (self.packets.len() - first) as u32,
-        }
-    }
-}
-
-/// A subtree of chapter 8's tree whose primitives fill at most this many
-/// packet lanes becomes one leaf: two packets at most, if of one kind. A
-/// cone takes a packet's four lanes, since it is tested alone. (Why 8:
-/// book/appendix/performance.md, "Profile and what it bought".)
-const LEAF_MAX: u32 = 8;
-
-/// The primitives under each node of chapter 8's tree, (first, count): a
-/// subtree's are contiguous, its first child's before its second's.
-fn spans(binary: &[build::Node]) -> Vec<(u32, u32)> {
-    let mut spans = vec![(0, 0); binary.len()];
-    // Children come after their parent: work from the end.
-    for n in (0..binary.len()).rev() {
-        spans[n] = match binary[n] {
-            build::Node {
-                count: 0, start, ..
-            } => {
-                let ((first, left), (second, right)) = (spans[n + 1], spans[start as usize]);
-                debug_assert_eq!(
-                    first + left,
-                    second,
-                    "a subtree's primitives are contiguous"
-                );
-                (first, left + right)
-            }
-            build::Node { start, count, .. } => (start, count),
-        };
-    }
-    spans
-}
-
-/// The prefix sums of the lanes each primitive fills: 1, or 4 for a cone.
-fn lanes_before(primitives: &[Primitive]) -> Vec<u32> {
-    let lanes = |p: &Primitive| match p.geometry {
-        primitive::Geometry::Cone { .. } => 4,
-        _ => 1,
-    };
-    std::iter::once(0)
-        .chain(primitives.iter().scan(0, |sum, p| {
-            *sum += lanes(p);
-            Some(*sum)
-        }))
-        .collect()
-}
-
-fn area(binary: &[build::Node], n: usize) -> f32 {
-    binary[n].bounds.half_area()
 }
 
 impl WideBvh<'_> {

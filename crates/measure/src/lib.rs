@@ -6,7 +6,7 @@
 //! in the format that `-o` names (`output`).
 //!
 //! Both render with the tracer `raybook render` uses: [`raybook::render`],
-//! the complete tracer against [`raybook::world`], the four-wide BVH.
+//! the complete tracer against [`raybook::world`], the wide BVH.
 
 pub mod accuracy;
 pub mod bench;

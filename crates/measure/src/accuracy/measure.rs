@@ -35,7 +35,7 @@ pub fn scene_for(scene: &Scene, setting: &Setting, seed: Option<u64>) -> Scene {
 }
 
 /// Renders `setting` once with its tracer (for the complete one, the
-/// four-wide BVH's build and the render, timed together), `on_row` called
+/// wide BVH's build and the render, timed together), `on_row` called
 /// per row.
 pub fn render_timed(
     scene: &Scene,

@@ -78,7 +78,7 @@ pub struct BenchArgs {
 
     /// Report primary-ray throughput instead: each scene's rays (one per
     /// pixel, through its centre) traced to their closest hit against
-    /// the complete tracer's four-wide BVH on one thread and on --threads
+    /// the complete tracer's wide BVH on one thread and on --threads
     /// threads (and against chapter 8's on one, for comparison), and by
     /// Embree 4 on one thread and in --threads processes at once (so that
     /// both sides' threads share the cores alike), with how far the two

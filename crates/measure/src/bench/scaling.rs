@@ -1,6 +1,6 @@
 //! `bench --scaling`: the BVH's build time and the render time against the
 //! number of primitives, measured in this process with the tracer that
-//! `raybook render` uses: the complete tracer against the four-wide BVH
+//! `raybook render` uses: the complete tracer against the wide BVH
 //! ([`raybook::world`]).
 
 use std::path::PathBuf;
@@ -28,7 +28,7 @@ struct ScalingTiming {
     primitives: usize,
     /// Median time to build the BVH.
     build_seconds: f64,
-    /// Nodes of the four-wide BVH.
+    /// Nodes of the wide BVH (eight or four wide).
     nodes: usize,
     /// Median time to render, not counting the build.
     render_seconds: f64,

@@ -13,7 +13,7 @@
 //! | its [`Object`](crate::Object): a `Shape` (112 bytes: the largest, a smooth triangle, has 6 vectors of 16 bytes), material index, flag | 128 | always |
 //! | the same, in its batch's list, for the 32 batches parsed at once | 128 | while its group is parsed |
 //! | the complete tracer's BVH: packets of 192 bytes, about 3.2 spheres each | 60 | while rendering |
-//! | the complete tracer's BVH: four-wide nodes of 128 bytes, about 0.09 a sphere | 12 | while rendering |
+//! | the complete tracer's BVH: four-wide nodes of 128 bytes, about 0.09 a sphere; or, with AVX2, eight-wide nodes of 256 bytes, about 0.053 a sphere (balls-4) | 12, or 14 | while rendering |
 //! | its build: chapter 8's `Item` (box, centre, index) and binary nodes (48 bytes, about 2 per primitive), a `Primitive` (geometry, index, flag), the collapse's spans | 64 + 96 + 80 + 20 | while building |
 //!
 //! So loading peaks near text + 128 bytes per object, and building the BVH

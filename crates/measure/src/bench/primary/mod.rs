@@ -4,7 +4,7 @@
 //! The rays are the renderer's own: one per pixel, through its centre, from
 //! chapter 1's [`Camera`](raybook::tracer::Camera) ([`primary_rays`]).
 //! raybook traces them with `closest_hit` against [`primary_world`] (the
-//! complete tracer's four-wide BVH, [`raybook::wide`]), on one thread
+//! complete tracer's wide BVH, [`raybook::wide`]), on one thread
 //! and on `--threads` threads; Embree traces them through the PyPI package
 //! embreex, run by `crates/measure/src/bench/embree_primary.py` in a Python that can import
 //! it, on one thread and in `--threads` processes at once. Only the tracing

@@ -66,6 +66,10 @@ pub(in crate::bench) fn report(
     }
     bar.finish_and_clear();
     let (size, runs) = (args.size, args.runs);
+    let lanes = match raybook::wide::Width::detect() {
+        raybook::wide::Width::Four => "four",
+        raybook::wide::Width::Eight => "eight",
+    };
     let embree_line = match &embree {
         Ok(e) => format!(
             "Embree 4 through {} ({}), one thread and {threads} processes at once",
@@ -75,7 +79,7 @@ pub(in crate::bench) fn report(
     };
     let mut out = format!(
         "{size}×{size} primary rays (one per pixel, through its centre), closest hit against \
-         the complete tracer's four-wide BVH, 1 and {threads} threads; {embree_line}; median of {runs} runs, \
+         the complete tracer's {lanes}-wide BVH, 1 and {threads} threads; {embree_line}; median of {runs} runs, \
          tracing only (no ray making, no BVH build)\n\n{}",
         timings_table(&timings, threads)
     );

@@ -1,0 +1,154 @@
+//! Chapter 8's binary tree collapsed into nodes of `W` lanes (four, or
+//! eight where the CPU has AVX2), and its leaves into packets.
+
+use ch08_bvh::build;
+
+use super::node::{Child, Node};
+use super::packet::{self, Packet};
+use super::primitive::{self, Primitive};
+
+/// Chapter 8's tree `binary` collapsed into nodes of `W` lanes (root
+/// first), the leaves' primitives appended to `packets`.
+pub(super) fn collapse<const W: usize>(
+    binary: &[build::Node],
+    primitives: &[Primitive],
+    packets: &mut Vec<Packet>,
+) -> Vec<Node<W>> {
+    let mut nodes = Vec::with_capacity(binary.len() / (W / 2) + 1);
+    if !binary.is_empty() {
+        let mut tree = Collapse {
+            spans: spans(binary),
+            lanes_before: lanes_before(primitives),
+            binary,
+            primitives,
+            nodes: &mut nodes,
+            packets,
+        };
+        tree.node(0);
+    }
+    nodes
+}
+
+/// Chapter 8's binary tree, being collapsed into nodes of `W` lanes and
+/// the leaves' packets.
+struct Collapse<'t, const W: usize> {
+    binary: &'t [build::Node],
+    /// Each binary node's primitives: (first, count).
+    spans: Vec<(u32, u32)>,
+    /// For each i, the packet lanes that primitives[..i] fill on their own:
+    /// one for a sphere or a triangle, four for a cone (a packet of its
+    /// own).
+    lanes_before: Vec<u32>,
+    /// In the order of the binary tree's leaves.
+    primitives: &'t [Primitive],
+    nodes: &'t mut Vec<Node<W>>,
+    packets: &'t mut Vec<Packet>,
+}
+
+impl<const W: usize> Collapse<'_, W> {
+    /// Appends the `W`-wide node standing for binary node `index` and the
+    /// subtree below it; returns its index.
+    ///
+    /// Its lanes start as the binary node's two children. While a lane
+    /// holds an inner node and a lane is free, the inner child with the
+    /// largest box (the one rays most often enter) is replaced by its own
+    /// two children. A binary leaf at the root becomes a node with one leaf
+    /// lane.
+    fn node(&mut self, index: usize) -> u32 {
+        let binary = self.binary;
+        let at = self.nodes.len();
+        self.nodes.push(Node::EMPTY);
+        let mut lanes = if self.is_leaf(index) {
+            vec![index]
+        } else {
+            vec![index + 1, binary[index].start as usize]
+        };
+        while lanes.len() < W {
+            let inner = lanes
+                .iter()
+                .enumerate()
+                .filter(|&(_, &n)| !self.is_leaf(n))
+                .max_by(|a, b| area(binary, *a.1).total_cmp(&area(binary, *b.1)));
+            let Some((lane, &n)) = inner else { break };
+            lanes.swap_remove(lane);
+            lanes.extend([n + 1, binary[n].start as usize]);
+        }
+        for (lane, &n) in lanes.iter().enumerate() {
+            let child = if self.is_leaf(n) {
+                let (start, count) = self.spans[n];
+                self.leaf(start, count)
+            } else {
+                Child::Node(self.node(n))
+            };
+            self.nodes[at].set(lane, binary[n].bounds, child);
+        }
+        at as u32
+    }
+
+    /// Is binary node `n` a leaf here: a leaf of chapter 8's tree, or a
+    /// subtree whose primitives fill at most [`LEAF_MAX`] lanes?
+    fn is_leaf(&self, n: usize) -> bool {
+        let (first, count) = self.spans[n];
+        let (first, end) = (first as usize, (first + count) as usize);
+        self.binary[n].count > 0 || self.lanes_before[end] - self.lanes_before[first] <= LEAF_MAX
+    }
+
+    /// The packets of the binary leaf of `count` primitives from `start`.
+    fn leaf(&mut self, start: u32, count: u32) -> Child {
+        let first = self.packets.len();
+        let (start, end) = (start as usize, (start + count) as usize);
+        packet::pack(&self.primitives[start..end], self.packets);
+        Child::Leaf {
+            start: first as u32,
+            count: (self.packets.len() - first) as u32,
+        }
+    }
+}
+
+/// A subtree of chapter 8's tree whose primitives fill at most this many
+/// packet lanes becomes one leaf: two packets at most, if of one kind. A
+/// cone takes a packet's four lanes, since it is tested alone. (Why 8:
+/// book/appendix/performance.md, "Profile and what it bought".)
+const LEAF_MAX: u32 = 8;
+
+/// The primitives under each node of chapter 8's tree, (first, count): a
+/// subtree's are contiguous, its first child's before its second's.
+fn spans(binary: &[build::Node]) -> Vec<(u32, u32)> {
+    let mut spans = vec![(0, 0); binary.len()];
+    // Children come after their parent: work from the end.
+    for n in (0..binary.len()).rev() {
+        spans[n] = match binary[n] {
+            build::Node {
+                count: 0, start, ..
+            } => {
+                let ((first, left), (second, right)) = (spans[n + 1], spans[start as usize]);
+                debug_assert_eq!(
+                    first + left,
+                    second,
+                    "a subtree's primitives are contiguous"
+                );
+                (first, left + right)
+            }
+            build::Node { start, count, .. } => (start, count),
+        };
+    }
+    spans
+}
+
+/// The prefix sums of the lanes each primitive fills: 1, or 4 for a cone.
+fn lanes_before(primitives: &[Primitive]) -> Vec<u32> {
+    let lanes = |p: &Primitive| match p.geometry {
+        primitive::Geometry::Cone { .. } => 4,
+        _ => 1,
+    };
+    std::iter::once(0)
+        .chain(primitives.iter().scan(0, |sum, p| {
+            *sum += lanes(p);
+            Some(*sum)
+        }))
+        .collect()
+}
+
+fn area(binary: &[build::Node], n: usize) -> f32 {
+    binary[n].bounds.half_area()
+}
