@@ -303,11 +303,13 @@ impl WideBvh<'_> {
     /// hits kept beside it that lie in its window; or, where the walk may
     /// have missed one, a second walk ([`Self::first_coincident`]).
     ///
-    /// The nearest hit's record is made where the answer is returned, and
-    /// replaced there in the rare case that another hit wins: made aside and
-    /// copied, its last bytes were read back before they could be (a copy
-    /// of 16 bytes that three smaller writes had just made), and most rays
-    /// waited for that (`cargo bench --bench coincident`, balls-4).
+    /// The nearest hit's record is made in the answer, read there field by
+    /// field, and replaced in the rare case that another hit wins. Made
+    /// aside and moved, it was read back in wider pieces than chapter 2's
+    /// `hit_with_weights` had just written it (8 bytes over two writes of
+    /// 4), and the decision waited for those writes to reach the cache: on
+    /// balls-4 about a third of the rule's cost in time (`cargo bench --bench
+    /// coincident`; book/appendix/performance.md).
     fn nearest_by_the_rule<const KEEP: usize>(
         &self,
         ray: &Ray,
@@ -318,12 +320,10 @@ impl WideBvh<'_> {
         let origin = ray.origin.abs().max_element();
         let mut found = rule::Candidates::<KEEP>::new(t_max, origin);
         self.walk(&mut prepared, t_min, &mut found);
-        let mut answer = Some(self.hit(ray, found.nearest?));
-        if let Some(nearest) = &mut answer
-            && nearest.object != 0
-            && !found.surely_nearest(nearest, ray)
-        {
-            *nearest = self.in_the_window(&found, &mut prepared, (t_min, t_max), *nearest);
+        let mut answer = None;
+        let nearest = answer.insert(self.hit(ray, found.nearest?));
+        if nearest.object != 0 && !found.surely_nearest(nearest, ray) {
+            *nearest = self.in_the_window(&found, &mut prepared, (t_min, t_max), nearest);
         }
         answer
     }
@@ -338,8 +338,9 @@ impl WideBvh<'_> {
         found: &rule::Candidates<KEEP>,
         ray: &mut PreparedRay,
         (t_min, t_max): (f32, f32),
-        nearest: Hit,
+        nearest: &Hit,
     ) -> Hit {
+        let nearest = *nearest;
         let range = coincident_range(&nearest, ray.ray, t_min, t_max);
         match found.first_within(nearest.object as u32, range) {
             Ok(first) => first.map_or(nearest, |first| self.hit(ray.ray, first)),
