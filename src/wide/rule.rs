@@ -109,6 +109,16 @@ impl<const KEEP: usize> Candidates<KEEP> {
     }
 }
 
+/// The walk's limit for a nearest hit at `t`: t + [`SLACK`]·(|r0|∞ + |t|),
+/// or the next number above t if that rounds to t (t is 0 or subnormal).
+/// The same as the larger of the two, since a number above t is at least
+/// the next one; but the next one is worked out only where it is needed
+/// (`next_up` is a few branches, and this is in every offer of the walk).
+pub(super) fn reach(t: f32, origin: f32) -> f32 {
+    let reach = t + SLACK * (origin + t.abs());
+    if reach > t { reach } else { t.next_up() }
+}
+
 /// Is chapter 2's window τ = (2e + 8ε(|r0|∞ + t)) / |n·rd| of `hit`
 /// (`coincidence_window`) surely no wider than half of `room`, so that
 /// t + τ, rounded, stays below t + `room`? Asked without the division:
@@ -151,8 +161,7 @@ impl<const KEEP: usize> Offer for Candidates<KEEP> {
             }
             previous => {
                 self.nearest = Some(hit);
-                let reach = (t + SLACK * (self.origin + t.abs())).max(t.next_up());
-                self.limit = self.limit.min(reach);
+                self.limit = self.limit.min(reach(t, self.origin));
                 let limit = self.limit;
                 if let Some(previous) = previous.filter(|p| p.1 < object && p.0 < limit) {
                     self.keep(previous);

@@ -129,3 +129,19 @@ fn the_window_without_its_division_never_claims_more_room_than_it_has() {
         "the window fits on {fits} of {asked} rays only"
     );
 }
+
+/// The walk's limit (`rule::reach`) is the larger of t + slack and the next
+/// number above t, as it was written before: at 0, subnormal, negative,
+/// large and infinite t, and far from the origin.
+#[test]
+fn the_walks_limit_is_the_larger_of_the_slack_and_the_next_number() {
+    let mut rng = Rng(0x452);
+    let special = [0.0, -0.0, 1e-45, 1e-40, 1e-30, -1e-40, 1.0, -1.0, 3e38, INF];
+    let random = (0..10_000).map(|_| rng.range(-1.0, 1.0) * 10f32.powf(rng.range(-44.0, 38.0)));
+    for t in special.into_iter().chain(random) {
+        for origin in [0.0, 1e-40, 1.0, 1e5, 3e38] {
+            let before = (t + rule::SLACK * (origin + t.abs())).max(t.next_up());
+            assert_eq!(rule::reach(t, origin).to_bits(), before.to_bits(), "{t} {origin}");
+        }
+    }
+}
