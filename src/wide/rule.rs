@@ -150,17 +150,22 @@ impl<const KEEP: usize> Offer for Candidates<KEEP> {
     /// before it and still below the limit. A hit beyond the nearest is kept if listed before it:
     /// one listed after it can never win, since the nearest hit, nearer and
     /// listed earlier, lies in every window that it lies in.
+    ///
+    /// The hit is put together where it is stored, not once for both arms:
+    /// kept aside for [`Self::keep`] (out of line), it was copied into
+    /// [`Self::nearest`] 16 bytes at a time from three smaller writes, and
+    /// the record of the hit after the walk read it back 4 bytes at a time
+    /// out of one 16-byte write; both wait for the writes to reach the cache.
     #[inline(always)]
     fn offer(&mut self, (t, weights): (f32, Weights), object: u32) {
-        let hit = (t, object, weights);
         match self.nearest {
             Some((best, first, _)) if t > best || (t == best && object > first) => {
                 if object < first {
-                    self.keep(hit);
+                    self.keep((t, object, weights));
                 }
             }
             previous => {
-                self.nearest = Some(hit);
+                self.nearest = Some((t, object, weights));
                 self.limit = self.limit.min(reach(t, self.origin));
                 let limit = self.limit;
                 if let Some(previous) = previous.filter(|p| p.1 < object && p.0 < limit) {

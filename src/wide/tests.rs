@@ -141,7 +141,11 @@ fn the_walks_limit_is_the_larger_of_the_slack_and_the_next_number() {
     for t in special.into_iter().chain(random) {
         for origin in [0.0, 1e-40, 1.0, 1e5, 3e38] {
             let before = (t + rule::SLACK * (origin + t.abs())).max(t.next_up());
-            assert_eq!(rule::reach(t, origin).to_bits(), before.to_bits(), "{t} {origin}");
+            assert_eq!(
+                rule::reach(t, origin).to_bits(),
+                before.to_bits(),
+                "{t} {origin}"
+            );
         }
     }
 }
