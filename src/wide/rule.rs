@@ -16,6 +16,11 @@
 //! the guess is checked at the end: if N's window reaches beyond the limit
 //! the walk had, or more hits had to be kept than there is room for, the
 //! second walk is taken as before. The answer is the rule's either way.
+//!
+//! Most rays keep nothing, and for them the end is one question, asked
+//! without the window's division ([`window_fits`]): does N's window end
+//! below the limit, with room to spare? Only a ray in doubt, or with kept
+//! hits, works out the window itself.
 
 use arrayvec::ArrayVec;
 
