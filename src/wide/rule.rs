@@ -16,11 +16,17 @@
 //! the guess is checked at the end: if N's window reaches beyond the limit
 //! the walk had, or more hits had to be kept than there is room for, the
 //! second walk is taken as before. The answer is the rule's either way.
+//!
+//! Most rays keep nothing, and for them the end is one question, asked
+//! without the window's division ([`window_fits`]): does N's window end
+//! below the limit, with room to spare? Only a ray in doubt, or with kept
+//! hits, works out the window itself.
 
 use arrayvec::ArrayVec;
 
 use super::closest::{Found, Offer};
 use super::primitive::Weights;
+use crate::tracer::{Hit, Ray};
 
 /// The relative slack of the walk's limit beyond the nearest hit: 2⁻¹².
 /// A window τ = (2e + 8ε(|r0|∞ + t)) / |n·rd|, with e a few ε of the
@@ -28,7 +34,7 @@ use super::primitive::Weights;
 /// within the slack unless |n·rd| < 2⁻⁷ (a ray grazing the surface), or
 /// the object is far larger than its distance (a sphere's error grows with
 /// its radius). Those take the second walk.
-const SLACK: f32 = 1.0 / 4096.0;
+pub(super) const SLACK: f32 = 1.0 / 4096.0;
 
 /// The nearest hit, and the hits that may lie in its window, as the walk
 /// offers them.
@@ -80,6 +86,18 @@ impl<const KEEP: usize> Candidates<KEEP> {
             .copied())
     }
 
+    /// Is `nearest` (the hit of [`Self::nearest`]) surely the rule's answer?
+    /// Yes if nothing was kept and its window ends, with room to spare,
+    /// below the walk's limit: then no hit that the walk did not offer can
+    /// lie in it. Most rays end here, without the window's division
+    /// ([`window_fits`]); a ray in doubt takes the exact way, whose answer
+    /// is the same.
+    pub fn surely_nearest(&self, nearest: &Hit, ray: &Ray) -> bool {
+        self.kept.is_empty()
+            && !self.overflowed
+            && window_fits(nearest, ray, self.origin, self.limit - nearest.t)
+    }
+
     /// Keeps `hit`, which lies at or beyond the nearest hit and is listed
     /// before it. When there is no room, the hits that can no longer count
     /// make room: beyond the limit, or listed after the nearest hit (which
@@ -96,6 +114,36 @@ impl<const KEEP: usize> Candidates<KEEP> {
     }
 }
 
+/// The walk's limit for a nearest hit at `t`: t + [`SLACK`]·(|r0|∞ + |t|),
+/// or the next number above t if that rounds to t (t is 0 or subnormal).
+/// The same as the larger of the two, since a number above t is at least
+/// the next one; but the next one is worked out only where it is needed
+/// (`next_up` is a few branches, and this is in every offer of the walk).
+pub(super) fn reach(t: f32, origin: f32) -> f32 {
+    let reach = t + SLACK * (origin + t.abs());
+    if reach > t { reach } else { t.next_up() }
+}
+
+/// Is chapter 2's window τ = (2e + 8ε(|r0|∞ + t)) / |n·rd| of `hit`
+/// (`coincidence_window`) surely no wider than half of `room`, so that
+/// t + τ, rounded, stays below t + `room`? Asked without the division:
+/// 2·(2e + 8ε(|r0|∞ + t)) ≤ room·|n·rd|, with `origin` = |r0|∞.
+///
+/// After the walk, the division by |n·rd| is the last of a chain of slow
+/// steps from the hit record to the answer (the hit's normal takes a square
+/// root and a division of its own), and the answer waits for it. The factor
+/// 2 leaves room for the rounding of both sides (a few ε), and makes the
+/// test only stricter than the exact window: a ray it leaves in doubt (a
+/// grazing one, |n·rd| < 2⁻⁶ or so) works the window out exactly.
+/// `tests.rs` checks it against `coincident_range`, grazing rays included.
+/// (A product room·|n·rd| below f32's normal numbers, rounded by more than
+/// its ε, is left in doubt too.)
+pub fn window_fits(hit: &Hit, ray: &Ray, origin: f32, room: f32) -> bool {
+    let rounding = 8.0 * f32::EPSILON * (origin + hit.t);
+    let bound = room * hit.normal.dot(ray.direction).abs();
+    bound >= f32::MIN_POSITIVE && 2.0 * (2.0 * hit.error + rounding) <= bound
+}
+
 impl<const KEEP: usize> Offer for Candidates<KEEP> {
     #[inline]
     fn limit(&self) -> f32 {
@@ -107,19 +155,23 @@ impl<const KEEP: usize> Offer for Candidates<KEEP> {
     /// before it and still below the limit. A hit beyond the nearest is kept if listed before it:
     /// one listed after it can never win, since the nearest hit, nearer and
     /// listed earlier, lies in every window that it lies in.
+    ///
+    /// The hit is put together where it is stored, not once for both arms:
+    /// kept aside for [`Self::keep`] (out of line), it was copied into
+    /// [`Self::nearest`] 16 bytes at a time from three smaller writes, and
+    /// the record of the hit after the walk read it back 4 bytes at a time
+    /// out of one 16-byte write; both wait for the writes to reach the cache.
     #[inline(always)]
     fn offer(&mut self, (t, weights): (f32, Weights), object: u32) {
-        let hit = (t, object, weights);
         match self.nearest {
             Some((best, first, _)) if t > best || (t == best && object > first) => {
                 if object < first {
-                    self.keep(hit);
+                    self.keep((t, object, weights));
                 }
             }
             previous => {
-                self.nearest = Some(hit);
-                let reach = (t + SLACK * (self.origin + t.abs())).max(t.next_up());
-                self.limit = self.limit.min(reach);
+                self.nearest = Some((t, object, weights));
+                self.limit = self.limit.min(reach(t, self.origin));
                 let limit = self.limit;
                 if let Some(previous) = previous.filter(|p| p.1 < object && p.0 < limit) {
                     self.keep(previous);

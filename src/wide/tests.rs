@@ -9,7 +9,7 @@ use test_support::coincident::{coplanar, object, shuffle};
 use super::{PreparedRay, WideBvh, rule};
 use crate::toolkit::Vec3;
 use crate::toolkit::scene::{Object, Shape};
-use crate::tracer::{Ray, closest_hit, coincident_range};
+use crate::tracer::{Ray, closest_hit, closest_hit_by, coincident_range, intersect};
 
 const INF: f32 = f32::INFINITY;
 
@@ -81,4 +81,71 @@ fn the_rule_in_one_walk_gives_chapter_2s_hit_on_every_path() {
         "{past_limit} windows only reached past the limit"
     );
     assert!(overflowed > past_limit + 100, "{overflowed} overflows only");
+}
+
+/// The window's test without its division (`rule::window_fits`) against
+/// chapter 2's `coincident_range`: wherever it says the window fits in the
+/// room left below a limit, the exact window's upper end is at most that
+/// limit. Over planes, triangles and spheres, far from the origin and near
+/// it, grazing rays included; and it must say so for most rays, or the
+/// walk's answer would take the exact way every time.
+#[test]
+fn the_window_without_its_division_never_claims_more_room_than_it_has() {
+    let mut rng = Rng(0x451);
+    let [mut fits, mut asked] = [0usize; 2];
+    for scale in [1e-3, 1.0, 1e3, 1e5] {
+        for _ in 0..20 {
+            let (n, at) = (rng.unit(), scale * rng.vec(-50.0, 50.0));
+            let objects = coincident_scene(&mut rng, n, at, 4);
+            for i in 0..200 {
+                let height = if i % 4 == 0 {
+                    1e-4
+                } else {
+                    rng.range(0.01, 20.0)
+                };
+                let in_plane = |v: Vec3| v - v.dot(n) * n;
+                let eye = at + height * n + in_plane(rng.vec(-9.0, 9.0));
+                let ray = Ray::new(eye, at + in_plane(rng.vec(-2.0, 2.0)) - eye);
+                let Some(hit) = closest_hit_by(intersect, &objects, &ray, 0.0, INF) else {
+                    continue;
+                };
+                let origin = ray.origin.abs().max_element();
+                let slack = hit.t + rule::SLACK * (origin + hit.t);
+                let tiny = hit.t.next_up();
+                let random = hit.t + rng.range(0.0, 1e-3) * (origin + hit.t);
+                for limit in [slack, tiny, random, INF] {
+                    let upper = coincident_range(&hit, &ray, 0.0, INF).1;
+                    if rule::window_fits(&hit, &ray, origin, limit - hit.t) {
+                        assert!(upper <= limit, "{hit:?} {ray:?}: {upper} > {limit}");
+                        fits += usize::from(limit == slack);
+                    }
+                }
+                asked += 1;
+            }
+        }
+    }
+    assert!(
+        fits * 10 > asked * 6,
+        "the window fits on {fits} of {asked} rays only"
+    );
+}
+
+/// The walk's limit (`rule::reach`) is the larger of t + slack and the next
+/// number above t, as it was written before: at 0, subnormal, negative,
+/// large and infinite t, and far from the origin.
+#[test]
+fn the_walks_limit_is_the_larger_of_the_slack_and_the_next_number() {
+    let mut rng = Rng(0x452);
+    let special = [0.0, -0.0, 1e-45, 1e-40, 1e-30, -1e-40, 1.0, -1.0, 3e38, INF];
+    let random = (0..10_000).map(|_| rng.range(-1.0, 1.0) * 10f32.powf(rng.range(-44.0, 38.0)));
+    for t in special.into_iter().chain(random) {
+        for origin in [0.0, 1e-40, 1.0, 1e5, 3e38] {
+            let before = (t + rule::SLACK * (origin + t.abs())).max(t.next_up());
+            assert_eq!(
+                rule::reach(t, origin).to_bits(),
+                before.to_bits(),
+                "{t} {origin}"
+            );
+        }
+    }
 }
