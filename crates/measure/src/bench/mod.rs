@@ -45,6 +45,8 @@ pub struct BenchArgs {
     pub scenes: PathBuf,
 
     /// Only the scenes whose names contain one of these (default: all).
+    /// tinyraytracer's row comes whenever its binary is given;
+    /// `--only tinyraytracer` times it alone.
     #[arg(long)]
     pub only: Vec<String>,
 
@@ -102,15 +104,16 @@ pub struct BenchArgs {
 pub fn run(args: &BenchArgs) -> ExitCode {
     let threads = args.threads.unwrap_or_else(one_per_core);
     let started = Instant::now();
-    let report = spd_scenes(&args.scenes, &args.only).and_then(|scenes| {
-        if args.scaling {
-            scaling::report(args, threads, &scenes)
-        } else if args.primary {
-            primary::report(args, threads, &scenes)
-        } else {
-            spd::report(args, threads, &scenes)
-        }
-    });
+    let report =
+        spd_scenes(&args.scenes, &args.only, only_tinyraytracer(args)).and_then(|scenes| {
+            if args.scaling {
+                scaling::report(args, threads, &scenes)
+            } else if args.primary {
+                primary::report(args, threads, &scenes)
+            } else {
+                spd::report(args, threads, &scenes)
+            }
+        });
     match report {
         Ok(report) => {
             println!("{report}");
@@ -129,9 +132,21 @@ fn one_per_core() -> u32 {
     std::thread::available_parallelism().map_or(1, |n| n.get() as u32)
 }
 
+/// Is tinyraytracer's row all that is asked for (`--only tinyraytracer`,
+/// with its binary given, and no other table)? Then no .nff scene need match.
+fn only_tinyraytracer(args: &BenchArgs) -> bool {
+    args.tinyraytracer.is_some()
+        && !args.scaling
+        && !args.primary
+        && args
+            .only
+            .iter()
+            .any(|o| "tinyraytracer".contains(o.as_str()))
+}
+
 /// The .nff files of a folder whose names contain one of `only`, sorted; an
-/// error if there are none.
-fn spd_scenes(dir: &Path, only: &[String]) -> Result<Vec<PathBuf>, String> {
+/// error if there are none, unless `may_be_none`.
+fn spd_scenes(dir: &Path, only: &[String], may_be_none: bool) -> Result<Vec<PathBuf>, String> {
     let entries =
         std::fs::read_dir(dir).map_err(|e| format!("cannot read {}: {e}", dir.display()))?;
     let mut scenes: Vec<PathBuf> = entries
@@ -139,7 +154,7 @@ fn spd_scenes(dir: &Path, only: &[String]) -> Result<Vec<PathBuf>, String> {
         .filter(|p| p.extension().is_some_and(|e| e == "nff"))
         .filter(|p| only.is_empty() || only.iter().any(|o| p.to_string_lossy().contains(o)))
         .collect();
-    if scenes.is_empty() {
+    if scenes.is_empty() && !may_be_none {
         return Err(format!("no matching .nff scenes in {}", dir.display()));
     }
     scenes.sort();
@@ -187,7 +202,7 @@ pub fn median(values: impl IntoIterator<Item = f64>) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::median;
+    use super::{BenchArgs, SPD_SCENES, median, only_tinyraytracer, spd_scenes};
 
     #[test]
     fn the_median_is_the_middle_value_in_order() {
@@ -195,6 +210,36 @@ mod tests {
         assert_eq!(median([5.0]), 5.0);
         assert_eq!(median([4.0, 1.0, 3.0, 2.0]), 2.5, "the middle two's mean");
         assert_eq!(median([1.0, 100.0, 2.0, 3.0, 1e9]), 3.0, "not the mean");
+    }
+
+    #[test]
+    fn only_tinyraytracer_needs_no_nff_scene() {
+        #[derive(clap::Parser)]
+        struct Cli {
+            #[command(flatten)]
+            bench: BenchArgs,
+        }
+        let args = |words: &[&str]| {
+            let words = ["bench"].iter().chain(words);
+            <Cli as clap::Parser>::parse_from(words).bench
+        };
+        let trt = [
+            "--tinyraytracer",
+            "./tinyraytracer",
+            "--only",
+            "tinyraytracer",
+        ];
+        assert!(only_tinyraytracer(&args(&trt)));
+        assert!(!only_tinyraytracer(&args(&trt[2..])), "no binary given");
+        let primary = [&trt[..], &["--primary"]].concat();
+        assert!(
+            !only_tinyraytracer(&args(&primary)),
+            "--primary has no such row"
+        );
+        let spd = SPD_SCENES.as_ref();
+        let none = spd_scenes(spd, &["tinyraytracer".into()], false);
+        assert!(none.unwrap_err().contains("no matching .nff scenes"));
+        assert_eq!(spd_scenes(spd, &["tinyraytracer".into()], true), Ok(vec![]));
     }
 
     #[test]
