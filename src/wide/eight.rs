@@ -2,10 +2,11 @@
 //!
 //! A node of eight children keeps each bound of its eight boxes in a row of
 //! eight f32 (`Node<8>`, 32-byte aligned), so one slab plane of all eight
-//! boxes is one AVX load, and the tree is about half as deep as the
-//! four-wide one: a ray takes half the steps, each testing twice the boxes.
+//! boxes is one AVX load; collapsed to eight lanes, about three levels of
+//! chapter 8's tree make one node (two in the four-wide tree), so a ray
+//! takes fewer steps, each testing twice the boxes in as many instructions.
 //!
-//! The slab test does [`Slabs`]'s operations, lane for lane and in the same
+//! The slab test does [`Slabs`](super::node::Slabs)'s operations, lane for lane and in the same
 //! order (sub, mul, the max and min chains, the robust far factor, `<=`),
 //! so each box's "entered" and near t are the same bits as in four lanes.
 //! Not fused (no FMA): a fused multiply-add rounds once, not twice.

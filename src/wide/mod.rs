@@ -6,17 +6,18 @@
 //! (`collapse.rs`) to nodes of eight children (about three levels into
 //! one) or four (two into one); a step then tests all of a node's boxes in
 //! one slab test of eight AVX2 lanes (`eight.rs`) or four SSE lanes
-//! (`node.rs`). Why eight: a ray takes fewer steps down a shallower tree
-//! (about half as many nodes), and a step's eight boxes cost one AVX
-//! instruction where four cost one SSE instruction: 8 to 15% fewer
-//! instructions, 7 to 16% less time (book/appendix/performance.md).
+//! (`node.rs`). Why eight: a ray takes fewer steps down the shallower
+//! tree, and a step's eight boxes cost one AVX instruction where four cost
+//! one SSE instruction: 14 to 22% fewer instructions, 1.10 to 1.23 times less CPU
+//! time on five SPD scenes (book/appendix/performance.md, "Eight lanes").
 //! The width is chosen once per tree ([`Width::detect`]): eight where
 //! `is_x86_feature_detected!("avx2")` says so and `RAYBOOK_NO_AVX2` is
 //! unset; four on other CPUs (and on other targets, where the eight-wide
 //! code is not compiled). Both give the same bytes, box for box: the slab
 //! tests do the same operations in the same order, lane by lane.
-//! Subtrees of up to eight primitives become one leaf, so that its packets
-//! are full. Beside that:
+//! Subtrees whose primitives fill up to eight packet lanes (two packets;
+//! four lanes, one packet, in the eight-wide tree) become one leaf, so
+//! that its packets are full. Beside that:
 //! - a leaf's primitives are stored in packets of four spheres or four
 //!   triangles, lane by lane, and tested four at a time (`packet.rs`): only
 //!   their geometry, not chapter 8's copy of the whole `Shape`. The scene's

@@ -13,7 +13,7 @@
 //! | its [`Object`](crate::Object): a `Shape` (112 bytes: the largest, a smooth triangle, has 6 vectors of 16 bytes), material index, flag | 128 | always |
 //! | the same, in its batch's list, for the 32 batches parsed at once | 128 | while its group is parsed |
 //! | the complete tracer's BVH: packets of 192 bytes, about 3.2 spheres each | 60 | while rendering |
-//! | the complete tracer's BVH: four-wide nodes of 128 bytes, about 0.09 a sphere; or, with AVX2, eight-wide nodes of 256 bytes, about 0.053 a sphere (balls-4) | 12, or 14 | while rendering |
+//! | the complete tracer's BVH: four-wide nodes of 128 bytes, about 0.09 a sphere; or, with AVX2, eight-wide nodes of 256 bytes, about 0.11 a sphere (balls-4) | 12, or 29 | while rendering |
 //! | its build: chapter 8's `Item` (box, centre, index) and binary nodes (48 bytes, about 2 per primitive), a `Primitive` (geometry, index, flag), the collapse's spans | 64 + 96 + 80 + 20 | while building |
 //!
 //! So loading peaks near text + 128 bytes per object, and building the BVH
@@ -21,7 +21,9 @@
 //! render` (whole process) on scenes from `cargo run --release -p
 //! scene-files --example sphere_cloud`: 762 MiB for 2 million spheres,
 //! about 400 bytes per sphere, its 106 bytes of text included (563 MiB
-//! when a vector was 12 bytes, not 16). The estimate below adds a margin.
+//! when a vector was 12 bytes, not 16; 815 MiB, about 427 bytes, with the
+//! eight-wide tree, whose leaves are one packet, less full). The estimate
+//! below adds a margin.
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
