@@ -18,9 +18,11 @@
 //!   them; a sphere behind the ray's origin is known to have no root
 //!   ahead, and a shadow ray's blocker is often sure from bounds on the
 //!   roots, before chapter 2's divisions and square root in f64;
+//! - cones are first tested in f32 too, four at a time: rays that pass a
+//!   cone's axis farther away than its radius are ruled out (`cone.rs`);
 //! - the traversal stack is not filled before use (`traverse.rs`);
 //! - a scene of a few objects gets no tree: its packets are tested in turn,
-//!   each packet of triangles or cone after its own box.
+//!   each packet of triangles or cones after its own box.
 //!
 //! - chapter 2's rule for coincident surfaces is applied in the same walk
 //!   that finds the nearest hit (`rule.rs`), not in a second one;
@@ -32,6 +34,7 @@
 //! What it buys is measured in chapter 8's text and book/appendix/performance.md.
 
 mod closest;
+mod cone;
 mod node;
 mod packet;
 mod primitive;
