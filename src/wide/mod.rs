@@ -226,7 +226,7 @@ impl Collapse<'_> {
 
 /// A subtree of chapter 8's tree whose primitives fill at most this many
 /// packet lanes becomes one leaf: two packets at most, if of one kind. A
-/// cone takes a packet's four lanes, since it is tested alone. (Why 8:
+/// cone fills one lane, as a sphere or a triangle does. (Why 8:
 /// book/appendix/performance.md, "Profile and what it bought".)
 const LEAF_MAX: u32 = 8;
 
@@ -254,18 +254,10 @@ fn spans(binary: &[build::Node]) -> Vec<(u32, u32)> {
     spans
 }
 
-/// The prefix sums of the lanes each primitive fills: 1, or 4 for a cone.
+/// The prefix sums of the lanes each primitive fills: one each (a sphere,
+/// a triangle or a cone).
 fn lanes_before(primitives: &[Primitive]) -> Vec<u32> {
-    let lanes = |p: &Primitive| match p.geometry {
-        primitive::Geometry::Cone { .. } => 4,
-        _ => 1,
-    };
-    std::iter::once(0)
-        .chain(primitives.iter().scan(0, |sum, p| {
-            *sum += lanes(p);
-            Some(*sum)
-        }))
-        .collect()
+    (0..=primitives.len() as u32).collect()
 }
 
 fn area(binary: &[build::Node], n: usize) -> f32 {
