@@ -1,6 +1,6 @@
 //! A leaf's primitives in packets of four of one kind, stored lane by lane
 //! ("structure of arrays"), so that one test in four lanes (SSE on x86-64,
-//! through glam's `Vec4`) tests four spheres or four triangles at once.
+//! through glam's `Vec4`) tests four spheres, triangles or cones at once.
 //!
 //! The four-lane tests do the scalar tests' operations in the same order in
 //! each lane, so each lane's answer is the scalar test's to the last bit:
@@ -16,8 +16,7 @@
 //!   few lanes left, a sphere behind the ray's origin has no root ahead
 //!   ([`intersect_sphere_ahead`]), a shadow ray's blocker is often sure
 //!   without solving ([`surely_meets`]), and the others go one by one
-//!   through chapter 2's f64 test.
-//!
+//!   through chapter 2's f64 test;
 //! - four cones go through the f32 test that rules out rays that pass
 //!   their axes too far away ([`might_hit`](Cones::might_hit), `cone.rs`),
 //!   and the lanes left one by one through chapter 2's f64 test.
