@@ -5,7 +5,7 @@ use ch08_bvh::build;
 
 use super::node::{Child, Node};
 use super::packet::{self, Packet};
-use super::primitive::{self, Primitive};
+use super::primitive::Primitive;
 
 /// Chapter 8's tree `binary` collapsed into nodes of `W` lanes (root
 /// first), the leaves' primitives appended to `packets`.
@@ -18,7 +18,6 @@ pub(super) fn collapse<const W: usize>(
     if !binary.is_empty() {
         let mut tree = Collapse {
             spans: spans(binary),
-            lanes_before: lanes_before(primitives),
             binary,
             primitives,
             nodes: &mut nodes,
@@ -35,10 +34,6 @@ struct Collapse<'t, const W: usize> {
     binary: &'t [build::Node],
     /// Each binary node's primitives: (first, count).
     spans: Vec<(u32, u32)>,
-    /// For each i, the packet lanes that primitives[..i] fill on their own:
-    /// one for a sphere or a triangle, four for a cone (a packet of its
-    /// own).
-    lanes_before: Vec<u32>,
     /// In the order of the binary tree's leaves.
     primitives: &'t [Primitive],
     nodes: &'t mut Vec<Node<W>>,
@@ -86,12 +81,10 @@ impl<const W: usize> Collapse<'_, W> {
     }
 
     /// Is binary node `n` a leaf here: a leaf of chapter 8's tree, or a
-    /// subtree whose primitives fill at most [`leaf_max`]`(W)` lanes?
+    /// subtree of at most [`leaf_max`]`(W)` primitives?
     fn is_leaf(&self, n: usize) -> bool {
-        let (first, count) = self.spans[n];
-        let (first, end) = (first as usize, (first + count) as usize);
-        let lanes = self.lanes_before[end] - self.lanes_before[first];
-        self.binary[n].count > 0 || lanes <= leaf_max(W)
+        let (_, count) = self.spans[n];
+        self.binary[n].count > 0 || count <= leaf_max(W)
     }
 
     /// The packets of the binary leaf of `count` primitives from `start`.
@@ -106,9 +99,9 @@ impl<const W: usize> Collapse<'_, W> {
     }
 }
 
-/// In a tree of `w` lanes, a subtree of chapter 8's tree whose primitives
-/// fill at most this many packet lanes becomes one leaf. A cone takes a
-/// packet's four lanes, since it is tested alone.
+/// In a tree of `w` lanes, a subtree of chapter 8's tree of at most this
+/// many primitives becomes one leaf. Each fills one lane of a packet of
+/// four of its kind: a sphere, a triangle or a cone (`cone.rs`).
 ///
 /// Four wide: 8, two packets at most, if of one kind (why:
 /// book/appendix/performance.md, "Profile and what it bought"). Eight
@@ -141,20 +134,6 @@ fn spans(binary: &[build::Node]) -> Vec<(u32, u32)> {
         };
     }
     spans
-}
-
-/// The prefix sums of the lanes each primitive fills: 1, or 4 for a cone.
-fn lanes_before(primitives: &[Primitive]) -> Vec<u32> {
-    let lanes = |p: &Primitive| match p.geometry {
-        primitive::Geometry::Cone { .. } => 4,
-        _ => 1,
-    };
-    std::iter::once(0)
-        .chain(primitives.iter().scan(0, |sum, p| {
-            *sum += lanes(p);
-            Some(*sum)
-        }))
-        .collect()
 }
 
 fn area(binary: &[build::Node], n: usize) -> f32 {

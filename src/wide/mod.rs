@@ -15,11 +15,11 @@
 //! unset; four on other CPUs (and on other targets, where the eight-wide
 //! code is not compiled). Both give the same bytes, box for box: the slab
 //! tests do the same operations in the same order, lane by lane.
-//! Subtrees whose primitives fill up to eight packet lanes (two packets;
-//! four lanes, one packet, in the eight-wide tree) become one leaf, so
-//! that its packets are full. Beside that:
-//! - a leaf's primitives are stored in packets of four spheres or four
-//!   triangles, lane by lane, and tested four at a time (`packet.rs`): only
+//! Subtrees of up to eight primitives (two packets; four, one packet, in
+//! the eight-wide tree) become one leaf, so that its packets are full.
+//! Beside that:
+//! - a leaf's primitives are stored in packets of four spheres, four
+//!   triangles or four cones, lane by lane, and tested four at a time (`packet.rs`): only
 //!   their geometry, not chapter 8's copy of the whole `Shape`. The scene's
 //!   own shape is read only for the one hit that is chosen, with the
 //!   barycentric weights its triangle test found (chapter 2's `hit_at`
@@ -31,9 +31,11 @@
 //!   them; a sphere behind the ray's origin is known to have no root
 //!   ahead, and a shadow ray's blocker is often sure from bounds on the
 //!   roots, before chapter 2's divisions and square root in f64;
+//! - cones are first tested in f32 too, four at a time: rays that pass a
+//!   cone's axis farther away than its radius are ruled out (`cone.rs`);
 //! - the traversal stack is not filled before use (`traverse.rs`);
 //! - a scene of a few objects gets no tree: its packets are tested in turn,
-//!   each packet of triangles or cone after its own box.
+//!   each packet of triangles or cones after its own box.
 //!
 //! - chapter 2's rule for coincident surfaces is applied in the same walk
 //!   that finds the nearest hit (`rule.rs`), not in a second one;
@@ -46,6 +48,7 @@
 
 mod closest;
 mod collapse;
+mod cone;
 #[cfg(target_arch = "x86_64")]
 mod eight;
 mod node;

@@ -1,6 +1,6 @@
 //! A leaf's primitives in packets of four of one kind, stored lane by lane
 //! ("structure of arrays"), so that one test in four lanes (SSE on x86-64,
-//! through glam's `Vec4`) tests four spheres or four triangles at once.
+//! through glam's `Vec4`) tests four spheres, triangles or cones at once.
 //!
 //! The four-lane tests do the scalar tests' operations in the same order in
 //! each lane, so each lane's answer is the scalar test's to the last bit:
@@ -16,13 +16,15 @@
 //!   few lanes left, a sphere behind the ray's origin has no root ahead
 //!   ([`intersect_sphere_ahead`]), a shadow ray's blocker is often sure
 //!   without solving ([`surely_meets`]), and the others go one by one
-//!   through chapter 2's f64 test.
-//!
-//! Cones are rare (the SPD's rings and tree) and stay one to a packet.
+//!   through chapter 2's f64 test;
+//! - four cones go through the f32 test that rules out rays that pass
+//!   their axes too far away ([`might_hit`](Cones::might_hit), `cone.rs`),
+//!   and the lanes left one by one through chapter 2's f64 test.
 
 use glam::{BVec4A, Vec4};
 
 use super::closest::Offer;
+use super::cone::Cones;
 use super::primitive::{Geometry, PreparedRay, Primitive, Weights};
 use ch08_bvh::Aabb;
 
@@ -53,16 +55,7 @@ const _: () = assert!(std::mem::size_of::<Packet>() == 192);
 enum Shapes {
     Spheres(Spheres),
     Triangles(Triangles),
-    Cone(Cone),
-}
-
-/// One cone: its ends and their radii.
-#[derive(Debug, Clone, Copy)]
-struct Cone {
-    base: Vec3,
-    base_radius: f32,
-    apex: Vec3,
-    apex_radius: f32,
+    Cones(Cones),
 }
 
 /// Four spheres: centres' x, y, z and radii.
@@ -79,36 +72,24 @@ struct Triangles {
 }
 
 /// Appends the packets of a leaf's `primitives` to `packets`: spheres four
-/// at a time, then triangles four at a time, then each cone. (The order
+/// at a time, then triangles four at a time, then cones. (The order
 /// within a leaf changes no answer: the closest hit is chosen by t, then by
 /// object index.)
 pub fn pack(primitives: &[Primitive], packets: &mut Vec<Packet>) {
     let is_sphere = |p: &&Primitive| matches!(p.geometry, Geometry::Sphere { .. });
     let is_triangle = |p: &&Primitive| matches!(p.geometry, Geometry::Triangle { .. });
+    let is_cone = |p: &&Primitive| matches!(p.geometry, Geometry::Cone { .. });
     let spheres: Vec<_> = primitives.iter().filter(is_sphere).collect();
     let triangles: Vec<_> = primitives.iter().filter(is_triangle).collect();
+    let cones: Vec<_> = primitives.iter().filter(is_cone).collect();
     for four in spheres.chunks(4) {
         packets.push(Packet::of(four, Shapes::Spheres(Spheres::of(four))));
     }
     for four in triangles.chunks(4) {
         packets.push(Packet::of(four, Shapes::Triangles(Triangles::of(four))));
     }
-    for p in primitives {
-        if let Geometry::Cone {
-            base,
-            base_radius,
-            apex,
-            apex_radius,
-        } = p.geometry
-        {
-            let cone = Cone {
-                base,
-                base_radius,
-                apex,
-                apex_radius,
-            };
-            packets.push(Packet::of(&[p], Shapes::Cone(cone)));
-        }
+    for four in cones.chunks(4) {
+        packets.push(Packet::of(four, Shapes::Cones(Cones::of(four))));
     }
 }
 
@@ -185,9 +166,15 @@ impl Packet {
                     }
                 }
             }
-            Shapes::Cone(cone) => {
-                if let Some(t) = cone.intersect(ray, t_min, closest.limit()) {
-                    closest.offer((t, Weights::NONE), self.object[0]);
+            Shapes::Cones(cones) => {
+                for lane in lanes(cones.might_hit(ray).bitmask() & self.used) {
+                    let (base, base_radius, apex, apex_radius) = cones.get(lane);
+                    let limit = closest.limit();
+                    if let Some(t) =
+                        intersect_cone(base, base_radius, apex, apex_radius, ray.ray, t_min, limit)
+                    {
+                        closest.offer((t, Weights::NONE), self.object[lane]);
+                    }
                 }
             }
         }
@@ -241,22 +228,12 @@ impl Packet {
                     intersect_triangle(triangles.get(lane), ray.ray, t_min, t_max).is_some()
                 })
             }
-            Shapes::Cone(cone) => cone.intersect(ray, t_min, t_max).is_some(),
+            Shapes::Cones(cones) => lanes(cones.might_hit(ray).bitmask() & casting).any(|lane| {
+                let (base, base_radius, apex, apex_radius) = cones.get(lane);
+                intersect_cone(base, base_radius, apex, apex_radius, ray.ray, t_min, t_max)
+                    .is_some()
+            }),
         }
-    }
-}
-
-impl Cone {
-    /// Chapter 2's `intersect_cone`.
-    #[inline(always)]
-    fn intersect(&self, ray: &PreparedRay, t_min: f32, t_max: f32) -> Option<f32> {
-        let Cone {
-            base,
-            base_radius,
-            apex,
-            apex_radius,
-        } = *self;
-        intersect_cone(base, base_radius, apex, apex_radius, ray.ray, t_min, t_max)
     }
 }
 
