@@ -126,6 +126,15 @@ impl Packet {
         Some(boxes.fold(Aabb::EMPTY, Aabb::union))
     }
 
+    /// The scene objects of a packet of triangles, lane by lane; `None`
+    /// for other kinds (`behind.rs` tests their planes).
+    pub fn triangle_objects(&self) -> Option<impl Iterator<Item = u32> + '_> {
+        let Shapes::Triangles(_) = self.shapes else {
+            return None;
+        };
+        Some(lanes(self.used).map(|lane| self.object[lane]))
+    }
+
     fn of(primitives: &[&Primitive], shapes: Shapes) -> Packet {
         let mut packet = Packet {
             shapes,
