@@ -216,11 +216,13 @@ impl Packet {
                 for lane in lanes(spheres.might_hit(ray).bitmask() & casting) {
                     let (center, radius) = spheres.get(lane);
                     let quadratic = Quadratic::of(center, radius, ray.ray);
-                    if t_min == 0.0 && surely_meets(&quadratic, t_max) {
-                        return true;
+                    // Behind first: a shadow ray leaving its own sphere
+                    // (where `surely_meets` could only answer no).
+                    if behind_origin(&quadratic, t_min) {
+                        continue;
                     }
-                    if !behind_origin(&quadratic, t_min)
-                        && intersect_sphere(center, radius, ray.ray, t_min, t_max).is_some()
+                    if (t_min == 0.0 && surely_meets(&quadratic, t_max))
+                        || intersect_sphere(center, radius, ray.ray, t_min, t_max).is_some()
                     {
                         return true;
                     }
