@@ -109,14 +109,9 @@ impl Output {
 
     /// Writes the picture, whole or not at all (see the module's text).
     pub fn write(&self, image: &Image) -> Result<(), String> {
-        self.write_encoded(&self.format.encode(image))
-    }
-
-    /// Writes a picture already encoded in [`Self::format`] (`raybook
-    /// render` encodes it on the render's threads), whole or not at all.
-    pub fn write_encoded(&self, bytes: &[u8]) -> Result<(), String> {
         let file = writable(&self.path)?;
-        let written = write_atomically(&file, bytes);
+        let bytes = self.format.encode(image);
+        let written = write_atomically(&file, &bytes);
         written.map_err(|e| format!("cannot write {}: {e}", self.path.display()))
     }
 }

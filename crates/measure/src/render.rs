@@ -8,10 +8,10 @@
 //! writes no picture, is left to it.
 
 use std::process::ExitCode;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use raybook::CHAPTER;
-use raybook::toolkit::{Image, Scene, Stats};
+use raybook::toolkit::Scene;
 use raybook::workbench::cli::end_quietly_when_output_closes;
 use raybook::workbench::cli::{EffectPlan, RenderArgs, Rendered, render_with_bar, report};
 
@@ -36,8 +36,10 @@ fn render_and_write(args: &RenderArgs) -> Result<(), String> {
     args.check_criteria(&CHAPTER)?;
     let (plan, scene, name) = planned(args)?;
     println!("{plan}");
-    let (image, stats, seconds, bytes) = rendered_and_encoded(args, &scene, &output)?;
-    output.write_encoded(&bytes)?;
+    let start = Instant::now();
+    let (image, stats) = rendered(args, &scene)?;
+    let seconds = start.elapsed();
+    output.write(&image)?;
     args.write_linear(&image)?;
     let rendered = Rendered {
         image,
@@ -63,24 +65,11 @@ fn planned(args: &RenderArgs) -> Result<(EffectPlan, Scene, String), String> {
     Ok((plan, scene, name))
 }
 
-/// The picture, its statistics, the render's time and the picture encoded
-/// for `output`, on `--threads` threads, with the chapters' progress bar.
-///
-/// The picture is encoded on the render's pool of threads, not after it:
-/// its 8-bit conversion is a parallel loop, which outside the pool started
-/// rayon's global pool of threads for itself. On tinyraytracer's scene
-/// (1024×768, two threads, a whole process of about 0.15 s) that was
-/// several milliseconds (book/appendix/performance.md).
-fn rendered_and_encoded(
+/// The picture and its statistics, on `--threads` threads, with the
+/// chapters' progress bar.
+fn rendered(
     args: &RenderArgs,
     scene: &Scene,
-    output: &Output,
-) -> Result<(Image, Stats, Duration, Vec<u8>), String> {
-    let start = Instant::now();
-    render_with_bar(args, scene, |on_row| {
-        let (image, stats) = raybook::render(scene, on_row);
-        let seconds = start.elapsed();
-        let bytes = output.format.encode(&image);
-        (image, stats, seconds, bytes)
-    })
+) -> Result<(raybook::toolkit::Image, raybook::toolkit::Stats), String> {
+    render_with_bar(args, scene, |on_row| raybook::render(scene, on_row))
 }
