@@ -46,6 +46,7 @@
 //! chosen as chapter 2 chooses it, so the pictures equal brute force's.
 //! What it buys is measured in chapter 8's text and book/appendix/performance.md.
 
+mod behind;
 mod closest;
 mod collapse;
 mod cone;
@@ -64,6 +65,7 @@ use ch08_bvh::build::{self, Item};
 
 use crate::toolkit::scene::{Object, Shape};
 use crate::tracer::{Hit, Ray, World, coincident_range, hit_with_weights};
+use behind::Planes;
 use closest::{Closest, Found, Offer};
 use collapse::collapse;
 use node::Node;
@@ -86,6 +88,9 @@ pub struct WideBvh<'a> {
     /// In a small scene, each packet's box, tested before it (none for
     /// spheres): [`Packet::bounds`].
     flat_boxes: Vec<Option<Aabb>>,
+    /// In a small scene, each packet of triangles' planes, tested before
+    /// it by shadow rays (none for other packets): `behind.rs`.
+    flat_planes: Vec<Option<Planes>>,
 }
 
 /// The tree's nodes: four lanes each, or eight.
@@ -163,15 +168,20 @@ impl<'a> WideBvh<'a> {
         } else {
             Tree::Four(collapse(&binary, &primitives, &mut packets))
         };
-        let flat_boxes = if small {
-            packets.iter().map(|p| p.bounds(objects)).collect()
+        let (flat_boxes, flat_planes) = if small {
+            let boxes = packets.iter().map(|p| p.bounds(objects)).collect();
+            let planes = packets
+                .iter()
+                .map(|p| Planes::of(objects, p.triangle_objects()?));
+            (boxes, planes.collect())
         } else {
-            Vec::new()
+            (Vec::new(), Vec::new())
         };
         WideBvh {
             objects,
             flat: small,
             flat_boxes,
+            flat_planes,
             tree,
             packets,
             planes,

@@ -107,6 +107,15 @@ impl Packet {
         Some(boxes.fold(Aabb::EMPTY, Aabb::union))
     }
 
+    /// The scene objects of a packet of triangles, lane by lane; `None`
+    /// for other kinds (`behind.rs` tests their planes).
+    pub fn triangle_objects(&self) -> Option<impl Iterator<Item = u32> + '_> {
+        let Shapes::Triangles(_) = self.shapes else {
+            return None;
+        };
+        Some(lanes(self.used).map(|lane| self.object[lane]))
+    }
+
     fn of(primitives: &[&Primitive], shapes: Shapes) -> Packet {
         let mut packet = Packet {
             shapes,
@@ -194,11 +203,13 @@ impl Packet {
                 for lane in lanes(spheres.might_hit(ray).bitmask() & casting) {
                     let (center, radius) = spheres.get(lane);
                     let quadratic = Quadratic::of(center, radius, ray.ray);
-                    if t_min == 0.0 && surely_meets(&quadratic, t_max) {
-                        return true;
+                    // Behind first: a shadow ray leaving its own sphere
+                    // (where `surely_meets` could only answer no).
+                    if behind_origin(&quadratic, t_min) {
+                        continue;
                     }
-                    if !behind_origin(&quadratic, t_min)
-                        && intersect_sphere(center, radius, ray.ray, t_min, t_max).is_some()
+                    if (t_min == 0.0 && surely_meets(&quadratic, t_max))
+                        || intersect_sphere(center, radius, ray.ray, t_min, t_max).is_some()
                     {
                         return true;
                     }

@@ -69,11 +69,17 @@ impl WideBvh<'_> {
     }
 
     /// A small scene's [`any`](Self::any): every packet whose box (if it
-    /// has one) the ray enters.
+    /// has one) the ray enters, and of which, if triangles, one plane at
+    /// least is ahead of the ray (`behind.rs`: a shadow ray leaving a
+    /// triangle skips its packet so).
     fn blocks_flat(&self, ray: &mut PreparedRay, t_min: f32, t_max: f32) -> bool {
         let (origin, inverse) = (ray.ray.origin, ray.ray.direction.recip());
-        for (packet, bounds) in self.packets.iter().zip(&self.flat_boxes) {
+        let flat = self.flat_boxes.iter().zip(&self.flat_planes);
+        for (packet, (bounds, planes)) in self.packets.iter().zip(flat) {
             if bounds.is_none_or(|b| b.entry(origin, inverse, t_min, t_max).is_some())
+                && !planes
+                    .as_ref()
+                    .is_some_and(|p| p.all_behind(ray.ray, t_min))
                 && packet.blocks(ray, t_min, t_max)
             {
                 return true;
