@@ -29,8 +29,8 @@ fn wide_bvh_and_brute_force_give_the_same_picture_on_every_chapter_scene() {
     }
 }
 
-#[test]
-fn wide_bvh_and_chapter_8s_give_the_same_picture_on_the_spd_scenes() {
+/// The SPD scenes that come with the repository (`scenes/spd/*.nff`), sorted.
+fn spd_scenes() -> Vec<std::path::PathBuf> {
     let dir = workspace_root().join("scenes/spd");
     let mut paths: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
@@ -39,7 +39,12 @@ fn wide_bvh_and_chapter_8s_give_the_same_picture_on_the_spd_scenes() {
         .collect();
     paths.sort();
     assert!(paths.len() >= 7, "{paths:?}");
-    for path in paths {
+    paths
+}
+
+#[test]
+fn wide_bvh_and_chapter_8s_give_the_same_picture_on_the_spd_scenes() {
+    for path in spd_scenes() {
         let scene = nff::load(&path).unwrap().with_size(64, 64);
         let wide = WideBvh::build(&scene.objects);
         let binary = ch08_bvh::Bvh::build(&scene.objects);
@@ -376,15 +381,7 @@ fn the_complete_tracer_makes_the_same_bytes_on_any_number_of_threads() {
 #[test]
 fn eight_wide_and_four_wide_trees_give_the_same_bytes_on_the_spd_scenes() {
     use raybook::wide::Width;
-    let dir = workspace_root().join("scenes/spd");
-    let mut paths: Vec<_> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "nff"))
-        .collect();
-    paths.sort();
-    assert!(paths.len() >= 7, "{paths:?}");
-    for path in paths {
+    for path in spd_scenes() {
         let scene = nff::load(&path).unwrap().with_size(96, 96);
         let four = WideBvh::build_with(&scene.objects, Width::Four);
         let eight = WideBvh::build_with(&scene.objects, Width::Eight);
