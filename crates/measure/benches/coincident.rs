@@ -207,4 +207,9 @@ fn main() {
         "\n(256×192 primary rays, one thread's CPU time; median of {} rounds, the two ways in alternation)",
         rounds()
     );
+    println!(
+        "(wide BVH: the complete tracer's closest hit, the rule in the same walk. list: chapter 2's \
+         closest_hit, the lesson's second look through the list, for comparison; the complete tracer \
+         does not use it)"
+    );
 }
