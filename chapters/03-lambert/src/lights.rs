@@ -41,12 +41,8 @@ pub enum Arrival {
 /// whose area grows with r² (or colour × I at any distance, if the light
 /// says it has no falloff, [`Falloff::None`]: see `attenuation`). A spot
 /// light is a point light times [`spot_factor`].
-// Asked for every light at every hit. Inlined into the tracer's loop over
-// the lights, the point and the answer stay in registers; called, both go
-// through memory. The complete tracer's `trace` is compiled in other
-// crates, where the compiler does not inline this by itself (not even with
-// a plain #[inline]), and rendered chapter 3's scene 9% slower than this
-// chapter's tracer; inlined, it is as fast (`cargo bench --bench effects`).
+// Inlined: it runs for every light at every hit (why, measured:
+// book/appendix/performance.md, "Notes moved from the code").
 #[inline(always)]
 pub fn arrival(light: &Light, point: Vec3) -> Arrival {
     match *light {

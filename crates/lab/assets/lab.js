@@ -59,7 +59,7 @@ function showExercises(row) {
   if (row.next) box.append(el("p", { class: "next" }, `next: ${row.next.id} in ${row.next.file}:${row.next.line}: ${row.next.hint}`));
   const list = el("ul", {});
   for (const exercise of row.exercise_list) {
-    const item = el("li", {}, el("span", { class: exercise.open ? "open" : "written" }, exercise.open ? "○ " : "✓ "), exercise.id, " ");
+    const item = el("li", {}, el("span", { class: exercise.open ? "open" : "written", title: exercise.open ? "not written yet: its todo! is still there" : "written: the chapter's tests say whether it is right" }, exercise.open ? "○ " : "✎ "), exercise.id, " ");
     for (const level of [1, 2, 3]) item.append(el("button", { onclick: () => hint(exercise.id, level), title: ["", "a nudge: what to compute", "the text that derives it", "the tests that check it (runs them)"][level] }, `hint ${level}`));
     // The answer, only once `workbook hint` offers it: after an attempt that compiles.
     if (exercise.answer) item.append(el("button", { class: "answer", onclick: () => hint(exercise.id, 4), title: "the answer, to compare with your attempt (runs the tests)" }, "answer"));

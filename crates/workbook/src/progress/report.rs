@@ -143,7 +143,7 @@ pub fn header() -> String {
         "chapter",
         "passed",
         "failed",
-        "exercises",
+        "written",
         "first failure",
     ])
 }
