@@ -18,9 +18,9 @@ impl Mistake {
                 "your picture is gamma-encoded (sRGB or a 1/2.2 power), not linear: its mid-tones are too bright".into()
             }
             Mistake::ChannelsBgr => "red and blue are swapped: your channels are in BGR order".into(),
-            Mistake::HalfPixelShift(corner) => format!(
-                "your picture is shifted by half a pixel: each ray goes through its pixel's {} corner",
-                corner.name()
+            Mistake::HalfPixelShift(place) => format!(
+                "your picture is shifted by half a pixel: each ray goes through {}",
+                place.name()
             ),
             Mistake::FovUsedAsHorizontal => format!(
                 "your picture is zoomed in by {}: the scene's fov was used as the horizontal field of view",
@@ -82,13 +82,25 @@ impl Mistake {
 }
 
 impl Corner {
-    /// "top-left" and so on.
+    /// "its pixel's top-left corner" and so on.
     fn name(&self) -> &'static str {
         match self {
-            Corner::TopLeft => "top-left",
-            Corner::TopRight => "top-right",
-            Corner::BottomLeft => "bottom-left",
-            Corner::BottomRight => "bottom-right",
+            Corner::TopLeft => "its pixel's top-left corner",
+            Corner::TopRight => "its pixel's top-right corner",
+            Corner::BottomLeft => "its pixel's bottom-left corner",
+            Corner::BottomRight => "its pixel's bottom-right corner",
+            Corner::Top => {
+                "its pixel's top edge (the middle or a top corner: the picture cannot tell which)"
+            }
+            Corner::Bottom => {
+                "its pixel's bottom edge (the middle or a bottom corner: the picture cannot tell which)"
+            }
+            Corner::Left => {
+                "its pixel's left edge (the middle or a left corner: the picture cannot tell which)"
+            }
+            Corner::Right => {
+                "its pixel's right edge (the middle or a right corner: the picture cannot tell which)"
+            }
         }
     }
 }

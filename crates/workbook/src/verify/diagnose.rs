@@ -51,13 +51,58 @@ pub enum Mistake {
     SizeSwapped(Swap),
 }
 
-/// The corner of each pixel that a half-pixel-shifted tracer aims at.
+/// Where in each pixel a half-pixel-shifted tracer aims: a corner, or the
+/// middle of an edge. A picture that is the same along a row (chapter 1's
+/// sky) cannot tell the two corners of an edge apart, so it names the edge.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Corner {
     TopLeft,
     TopRight,
     BottomLeft,
     BottomRight,
+    Top,
+    Bottom,
+    Left,
+    Right,
+}
+
+impl Corner {
+    /// The four corners.
+    pub const CORNERS: [Corner; 4] = [
+        Corner::TopLeft,
+        Corner::TopRight,
+        Corner::BottomLeft,
+        Corner::BottomRight,
+    ];
+
+    /// Where it lies from the pixel's centre, in pixels (y down).
+    pub fn offset(self) -> (f32, f32) {
+        match self {
+            Corner::TopLeft => (-0.5, -0.5),
+            Corner::TopRight => (0.5, -0.5),
+            Corner::BottomLeft => (-0.5, 0.5),
+            Corner::BottomRight => (0.5, 0.5),
+            Corner::Top => (0.0, -0.5),
+            Corner::Bottom => (0.0, 0.5),
+            Corner::Left => (-0.5, 0.0),
+            Corner::Right => (0.5, 0.0),
+        }
+    }
+
+    /// The edge that all of `places` lie on, if they share one.
+    fn shared_edge(places: &[Corner]) -> Option<Corner> {
+        let offsets = || places.iter().map(|place| place.offset());
+        let edges = [
+            (Corner::Top, offsets().all(|(_, dy)| dy < 0.0)),
+            (Corner::Bottom, offsets().all(|(_, dy)| dy > 0.0)),
+            (Corner::Left, offsets().all(|(dx, _)| dx < 0.0)),
+            (Corner::Right, offsets().all(|(dx, _)| dx > 0.0)),
+        ];
+        edges
+            .into_iter()
+            .find(|&(_, shared)| shared)
+            .map(|(edge, _)| edge)
+    }
 }
 
 /// What a picture of swapped size holds.
@@ -255,39 +300,65 @@ fn unexplained_if_zoomed(expected: &RgbImage, actual: &RgbImage, tolerance: Tole
 }
 
 /// A tracer aiming at a pixel's corner shows the reference half a pixel
-/// off diagonally. A picture merely one pixel off along x is as consistent
-/// with two corners, so a corner is named only if it explains the picture
-/// clearly better than every other half-pixel offset (the second best
-/// leaves at least twice as many pixels, plus the tolerance).
+/// off diagonally. A corner is named only if it explains the picture
+/// clearly better than the other three (they leave at least twice as many
+/// pixels, plus the tolerance). Where two explain it as well, both on one
+/// edge, that edge is named: a picture that is the same along its rows
+/// (chapter 1's sky) cannot tell left from right, and one merely one pixel
+/// off along x is as consistent with both left corners. (The edges' own
+/// offsets are not tried: a sample at (x + dx, y) is checked against the
+/// reference pixels x + dx to x + dx + 1, so a shift of 0 or of half a
+/// pixel fits it alike, and it tells nothing apart.)
 fn half_pixel_shift(
     expected: &RgbImage,
     actual: &RgbImage,
     tolerance: Tolerance,
 ) -> Option<Candidate> {
-    use Corner::*;
-    let offsets = [
-        (-0.5, -0.5, Some(TopLeft)),
-        (0.5, -0.5, Some(TopRight)),
-        (-0.5, 0.5, Some(BottomLeft)),
-        (0.5, 0.5, Some(BottomRight)),
-        (-0.5, 0.0, None),
-        (0.5, 0.0, None),
-        (0.0, -0.5, None),
-        (0.0, 0.5, None),
-    ];
-    let mut scored: Vec<(usize, Option<Corner>)> = offsets
+    let scored: Vec<(usize, Corner)> = Corner::CORNERS
         .iter()
-        .map(|&(dx, dy, corner)| {
+        .map(|&place| {
+            let (dx, dy) = place.offset();
             let at = |x: u32, y: u32| (x as f32 + dx, y as f32 + dy);
-            (unexplained(expected, actual, tolerance, at), corner)
+            (unexplained(expected, actual, tolerance, at), place)
         })
         .collect();
-    scored.sort_by_key(|&(count, _)| count);
-    let ((best, corner), (second, _)) = (scored[0], scored[1]);
-    (second >= 2 * best + tolerance.pixels).then_some(Candidate {
-        mistake: Mistake::HalfPixelShift(corner?),
+    let best = scored.iter().map(|&(count, _)| count).min()?;
+    let as_good: Vec<Corner> = (scored.iter())
+        .filter(|&&(count, _)| count < 2 * best + tolerance.pixels)
+        .map(|&(_, place)| place)
+        .collect();
+    let place = match as_good[..] {
+        [one] => one,
+        _ => {
+            Corner::shared_edge(&as_good).filter(|&edge| cannot_tell(expected, edge, tolerance))?
+        }
+    };
+    Some(Candidate {
+        mistake: Mistake::HalfPixelShift(place),
         remaining: best,
     })
+}
+
+/// Is the reference the same along `edge` (along its rows for the top or
+/// bottom edge, down its columns for a side), so that it cannot tell the
+/// edge's two corners apart? Every pixel but the tolerance's count within
+/// the tolerance of its neighbour that way. (A picture with detail that
+/// way, one pixel off along the other, is no half-pixel slip to name.)
+fn cannot_tell(expected: &RgbImage, edge: Corner, tolerance: Tolerance) -> bool {
+    let (dx, dy) = match edge {
+        Corner::Top | Corner::Bottom => (1, 0),
+        _ => (0, 1),
+    };
+    let (width, height) = expected.dimensions();
+    let differing = expected
+        .enumerate_pixels()
+        .filter(|&(x, y, _)| x + dx < width && y + dy < height)
+        .filter(|&(x, y, pixel)| {
+            let next = expected.get_pixel(x + dx, y + dy);
+            (0..3).any(|c| pixel[c].abs_diff(next[c]) > tolerance.channel)
+        })
+        .count();
+    differing <= tolerance.pixels
 }
 
 /// Counts the pixels of `actual` that the reference cannot explain if pixel

@@ -168,3 +168,24 @@ fn a_swapped_size_is_named() {
         "render 160 pixels across",
     );
 }
+
+#[test]
+fn half_a_pixel_added_twice_is_named_in_chapter_1s_sky() {
+    // A student's slip: the ray of pixel (x, y) aimed at (x + 1, y + 1),
+    // half a pixel added twice. Chapter 1's sky is the same along a row,
+    // so the picture cannot tell the bottom-right corner from the
+    // bottom-left: verify names the edge.
+    let scene = ch01_rays::CHAPTER
+        .default_scene()
+        .unwrap()
+        .with_size(160, 120);
+    let camera = ch01_rays::Camera::new(&scene.camera, 160, 120);
+    let (image, _) = Image::render(
+        160,
+        120,
+        |x, y, _| ch01_rays::sky(&camera.ray_through(x as f32 + 1.0, y as f32 + 1.0)),
+        || {},
+    );
+    let shifted = Mistake::HalfPixelShift(workbook::verify::Corner::Bottom);
+    assert_named("1", &image.to_rgb8(), "twice.png", shifted, "bottom edge");
+}
