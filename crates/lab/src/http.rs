@@ -12,7 +12,8 @@
 //! * a head is at most [`MAX_HEAD`] bytes: then `431`, without reading more;
 //! * the lab takes no request body: one announced is refused with `413`
 //!   before a byte of it is read;
-//! * an answer the client does not read is given up after [`WRITE_TIMEOUT`].
+//! * an answer the client does not read is given up after [`WRITE_TIMEOUT`],
+//!   so that no worker waits longer on a client.
 //!
 //! A connection's head is read in a thread of its own, so that idle or
 //! slow clients hold only their own threads (at most [`MAX_CONNECTIONS`]);
@@ -37,7 +38,8 @@ pub const MAX_HEAD: usize = 8 * 1024;
 /// How long a client has to send its whole head: a browser sends it at once.
 pub const HEAD_DEADLINE: Duration = Duration::from_secs(10);
 
-/// How long writing an answer may block on a client that does not read.
+/// How long writing an answer may take, in all, to a client that does not
+/// read it (the lab's answers fit in the socket's buffers: never, in use).
 pub const WRITE_TIMEOUT: Duration = Duration::from_secs(10);
 
 /// The headers on every answer, errors included: the page's own script and
@@ -274,9 +276,29 @@ fn write_answer(stream: &mut TcpStream, answer: &Answer) {
         head.push_str(&format!("{field}: {value}\r\n"));
     }
     head.push_str("\r\n");
-    let _ = stream.set_write_timeout(Some(WRITE_TIMEOUT));
-    let _ = (stream.write_all(head.as_bytes())).and_then(|()| stream.write_all(&answer.body));
+    let deadline = Instant::now() + WRITE_TIMEOUT;
+    let _ = write_by(stream, head.as_bytes(), deadline)
+        .and_then(|()| write_by(stream, &answer.body, deadline));
     let _ = stream.shutdown(Shutdown::Write);
+}
+
+/// Writes all of `bytes` before `deadline`, or fails: a client that reads
+/// a byte now and then cannot stretch the answer past it.
+fn write_by(stream: &mut TcpStream, mut bytes: &[u8], deadline: Instant) -> std::io::Result<()> {
+    while !bytes.is_empty() {
+        let left = deadline.saturating_duration_since(Instant::now());
+        if left.is_zero() {
+            return Err(std::io::ErrorKind::TimedOut.into());
+        }
+        stream.set_write_timeout(Some(left))?;
+        match stream.write(bytes) {
+            Ok(0) => return Err(std::io::ErrorKind::WriteZero.into()),
+            Ok(written) => bytes = &bytes[written..],
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(())
 }
 
 /// The reason phrase of the statuses the lab answers with.
@@ -293,5 +315,49 @@ fn reason(status: u16) -> &'static str {
         431 => "Request Header Fields Too Large",
         503 => "Service Unavailable",
         _ => "Internal Server Error",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_head_is_its_line_and_headers() {
+        let head = b"GET /abc/api/state?x=1 HTTP/1.1\r\nHost: 127.0.0.1:8000\r\nX-A:  b ";
+        let request = parse_head(head).ok().unwrap();
+        assert_eq!(
+            (request.method.as_str(), request.target.as_str()),
+            ("GET", "/abc/api/state?x=1")
+        );
+        assert_eq!(request.header("host"), Some("127.0.0.1:8000"));
+        assert_eq!(request.header("X-A"), Some("b"));
+        assert_eq!(request.header("Cookie"), None);
+        for bad in [
+            &b"GET /"[..],
+            b"GET / HTTP/2",
+            b"GET x HTTP/1.1",
+            b"GET / HTTP/1.1\r\nX",
+            b"\xff",
+        ] {
+            assert!(matches!(parse_head(bad), Err(Some(_))), "{bad:?}");
+        }
+    }
+
+    /// A client that never reads holds a writer no longer than its deadline.
+    #[test]
+    fn an_unread_answer_is_given_up_at_its_deadline() {
+        let listener = TcpListener::bind(("127.0.0.1", 0)).unwrap();
+        let _client = TcpStream::connect(listener.local_addr().unwrap()).unwrap();
+        let (mut stream, _) = listener.accept().unwrap();
+        let start = Instant::now();
+        let bytes = vec![0u8; 256 << 20];
+        let written = write_by(&mut stream, &bytes, start + Duration::from_millis(500));
+        assert!(written.is_err(), "256 MiB fit in the buffers?");
+        assert!(
+            start.elapsed() < Duration::from_secs(3),
+            "{:?}",
+            start.elapsed()
+        );
     }
 }
