@@ -29,13 +29,13 @@ pub fn check<'a>(target: &'a str, host: Option<&str>, token: &str, port: u16) ->
     let Some(path) = percent_decoded(raw) else {
         return Verdict::NotFound;
     };
-    let Some(rest) = path
-        .strip_prefix('/')
-        .and_then(|p| p.strip_prefix(token))
-        .filter(|rest| rest.is_empty() || rest.starts_with('/'))
-    else {
+    let Some(below) = path.strip_prefix('/') else {
         return Verdict::NotFound;
     };
+    let (first, rest) = below.split_at(below.find('/').unwrap_or(below.len()));
+    if !same_secret(first, token) {
+        return Verdict::NotFound;
+    }
     if escapes(rest) {
         return Verdict::NotFound;
     }
@@ -44,6 +44,24 @@ pub fn check<'a>(target: &'a str, host: Option<&str>, token: &str, port: u16) ->
         path: path.to_owned(),
         query,
     }
+}
+
+/// Is `given` the secret `token`? Compared in constant time: every byte
+/// is looked at, whatever the first difference, so that how long a wrong
+/// guess takes tells nothing about how much of it was right. (The length
+/// is no secret: 32 hex digits.)
+fn same_secret(given: &str, token: &str) -> bool {
+    let differences = (given.bytes().zip(token.bytes()))
+        .fold(0u8, |acc, (a, b)| std::hint::black_box(acc | (a ^ b)));
+    given.len() == token.len() && differences == 0
+}
+
+/// Did the browser mark the request as sent by a page of another site?
+/// `Sec-Fetch-Site` (which no page can set) is `same-origin` for the lab's
+/// own page's requests, and `none` when the student types the address; a
+/// request without it (curl, the tests) is judged by the token alone.
+pub fn sent_by_another_site(sec_fetch_site: Option<&str>) -> bool {
+    sec_fetch_site.is_some_and(|site| !matches!(site, "same-origin" | "none"))
 }
 
 /// Is `host` (a Host header) the loopback address at the lab's port?
@@ -95,7 +113,9 @@ pub fn percent_decoded(text: &str) -> Option<String> {
     String::from_utf8(out).ok()
 }
 
-/// A fresh secret token: 128 random bits, in hex.
+/// A fresh secret token: 128 random bits from the operating system's
+/// generator (getrandom: `getrandom(2)` on Linux, for cryptographic keys),
+/// in hex.
 pub fn new_token() -> Result<String, String> {
     let mut bytes = [0u8; 16];
     getrandom::fill(&mut bytes).map_err(|e| format!("no random numbers for the token: {e}"))?;
@@ -160,6 +180,24 @@ mod tests {
             assert!(!is_loopback(host, 8000), "{host}");
         }
         assert_eq!(check("/abc/", None, "abc", 8000), Verdict::ForeignHost);
+    }
+
+    #[test]
+    fn the_token_is_compared_whole() {
+        assert!(same_secret("abc", "abc"));
+        for given in ["abd", "ab", "abcd", "", "xbc"] {
+            assert!(!same_secret(given, "abc"), "{given}");
+        }
+    }
+
+    #[test]
+    fn only_the_pages_own_requests_reach_the_api() {
+        for site in [None, Some("same-origin"), Some("none")] {
+            assert!(!sent_by_another_site(site), "{site:?}");
+        }
+        for site in [Some("cross-site"), Some("same-site"), Some("")] {
+            assert!(sent_by_another_site(site), "{site:?}");
+        }
     }
 
     #[test]

@@ -25,43 +25,53 @@
 //! nothing more; everything it knows comes from the workbook's library
 //! (progress, hint, verify), so that when they change, the lab follows.
 //!
-//! # The HTTP server: tiny_http
+//! # The HTTP server: its own, in [`http`]
 //!
-//! The lab needs a few routes on the loopback address, answered from a
-//! handful of threads: no async runtime, no routing framework. tiny_http
-//! (0.12, of the tiny-http organisation, used by many tools for exactly
-//! this) is a blocking HTTP/1.1 server with four small dependencies (ascii,
-//! chunked_transfer, httpdate, log). Measured in a fresh target folder on
-//! this 2-core machine under load: `cargo build -p tiny_http` took 1.6 s
-//! of CPU (4.0 s wall), where an async stack (tokio, hyper) costs tens of
-//! seconds; the lab's own code then adds about 1 s to what `progress` has
-//! built already (the workbook and its dependencies, which it reuses).
+//! The lab needs a few GET routes on the loopback address, answered from a
+//! handful of threads: no async runtime, no routing framework, and no HTTP
+//! crate. Earlier rounds used tiny_http 0.12; it offers no bound at all: no
+//! read or write timeout, no cap on a header's length, a thread for every
+//! connection with no cap on their number, a body drained with one buffer
+//! of whatever length it announces, and an accept loop that ends for good
+//! the first time accept fails (no descriptor left). A local user could stop
+//! the lab or exhaust its memory. [`http`] reads one request per connection
+//! within stated limits and answers it, in about 300 lines a student reads.
 //!
 //! # Safety
 //!
 //! The server binds 127.0.0.1 only; every path starts with a random 128-bit
-//! token that is in the address it prints; a request whose Host header is
-//! not the loopback address is refused (a page of another site that
-//! rebinds its name to 127.0.0.1 sends its own name); it serves only its own
-//! page and the pictures it rendered, never a file named by the request
-//! ([`guard`]). Answers carry a content security policy that allows the
-//! page's own script and nothing else, and no page of another site may
-//! frame it (`frame-ancestors 'none'`: no click on the page can be one a
-//! hidden frame stole).
+//! token (from the system's generator, compared in constant time) that is in
+//! the address it prints; a request whose Host header is not the loopback
+//! address is refused (a page of another site that rebinds its name to
+//! 127.0.0.1 sends its own name); the API refuses a request the browser
+//! marks as sent by another site (`Sec-Fetch-Site`), and answers GET only;
+//! it serves only its own page and the pictures it rendered, never a file
+//! named by the request ([`guard`]). Every answer, errors included, carries
+//! a content security policy that allows the page's own script and nothing
+//! else, and no page of another site may frame it (`frame-ancestors
+//! 'none'`: no click on the page can be one a hidden frame stole).
+//!
+//! Idle and slow clients cannot stop it: connections, the time to send a
+//! request, its length and the time to take an answer are all bounded, and
+//! a request body is refused unread ([`http`]). The browser is not handed
+//! the token on its command line (which every local user can read in
+//! `/proc`): it opens a file only the student can read, which redirects to
+//! the address ([`launch`]).
 
 pub mod accuracy;
 pub mod bench;
 pub mod chapter;
 pub mod guard;
+pub mod http;
+pub mod launch;
 pub mod pixel;
 pub mod reference_svg;
 pub mod routes;
 pub mod work;
 
+use std::net::TcpListener;
 use std::path::PathBuf;
-use std::sync::Arc;
-
-use tiny_http::{Header, Request, Response, Server};
+use std::sync::{Arc, Mutex};
 
 use guard::Verdict;
 use routes::Answer;
@@ -69,7 +79,7 @@ use work::State;
 
 /// A lab serving on the loopback address.
 pub struct Lab {
-    server: Arc<Server>,
+    listener: Mutex<Option<TcpListener>>,
     state: Arc<State>,
     token: String,
     port: u16,
@@ -84,17 +94,15 @@ impl Lab {
     /// `root`. With `live`, runs progress at once and watches `chapters/`
     /// for saves; without, works only when the page asks (the tests).
     pub fn start(root: PathBuf, port: u16, live: bool) -> Result<Lab, String> {
-        let server = Server::http(("127.0.0.1", port))
+        let listener = TcpListener::bind(("127.0.0.1", port))
             .map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))?;
-        let port = server
-            .server_addr()
-            .to_ip()
-            .map(|a| a.port())
-            .ok_or("the server has no IP address")?;
+        let port = (listener.local_addr())
+            .map_err(|e| format!("the server has no address: {e}"))?
+            .port();
         let (state, queues) = State::new(root);
         state.start_workers(queues, live)?;
         Ok(Lab {
-            server: Arc::new(server),
+            listener: Mutex::new(Some(listener)),
             state,
             token: guard::new_token()?,
             port,
@@ -114,17 +122,16 @@ impl Lab {
         &self.token
     }
 
-    /// Answers requests in [`THREADS`] threads, in the background.
+    /// Answers requests in [`THREADS`] threads, in the background (once:
+    /// a second call does nothing).
     pub fn serve_in_background(&self) {
-        for _ in 0..THREADS {
-            let (server, state) = (self.server.clone(), self.state.clone());
-            let (token, port) = (self.token.clone(), self.port);
-            std::thread::spawn(move || {
-                for request in server.incoming_requests() {
-                    respond(request, &state, &token, port);
-                }
-            });
-        }
+        let Some(listener) = self.listener.lock().ok().and_then(|mut l| l.take()) else {
+            return;
+        };
+        let (state, token, port) = (self.state.clone(), self.token.clone(), self.port);
+        http::serve(listener, THREADS, move |request| {
+            respond(request, &state, &token, port)
+        });
     }
 
     /// Answers requests until the process ends.
@@ -136,64 +143,23 @@ impl Lab {
     }
 }
 
-/// Bodies up to this length tiny_http reads into memory at once (and
-/// drops safely); a longer one, or one after `Expect: 100-continue`, is
-/// read from the connection only when asked, or when the request drops.
-const BUFFERED_BODY: usize = 1024;
-
-/// Does `request` announce a body that tiny_http would stream, not buffer?
-fn announces_a_streamed_body(request: &Request) -> bool {
-    let expects = (request.headers().iter()).any(|h| h.field.equiv("Expect"));
-    match request.body_length() {
-        Some(length) => length > BUFFERED_BODY || (expects && length > 0),
-        None => false,
-    }
-}
-
 /// Checks and answers one request.
-fn respond(request: Request, state: &State, token: &str, port: u16) {
-    if announces_a_streamed_body(&request) {
-        // tiny_http 0.12 drains an unread body when the request is dropped
-        // (as `respond` does) with one buffer of the whole announced length:
-        // `Content-Length: 100000000000` aborts the process, and a body
-        // announced and never sent holds this thread for ever. The lab
-        // reads no body; such a request is left unanswered, its connection
-        // open: what any idle connection costs, and no more.
-        std::mem::forget(request);
-        return;
+fn respond(request: &http::Request, state: &State, token: &str, port: u16) -> Answer {
+    if request.method != "GET" {
+        return Answer::error(405, "the lab answers GET requests only");
     }
-    let host = request
-        .headers()
-        .iter()
-        .find(|h| h.field.equiv("Host"))
-        .map(|h| h.value.as_str().to_owned());
-    let answer = if *request.method() != tiny_http::Method::Get {
-        Answer::error(405, "the lab answers GET requests only")
-    } else {
-        match guard::check(request.url(), host.as_deref(), token, port) {
-            Verdict::Allowed { path, query } => routes::answer(state, &path, query),
-            Verdict::ForeignHost => Answer::error(
-                403,
-                "refused: the Host header is not the loopback address (127.0.0.1 or localhost)",
-            ),
-            Verdict::NotFound => Answer::not_found(),
+    match guard::check(&request.target, request.header("Host"), token, port) {
+        Verdict::Allowed { path, .. }
+            if path.starts_with("/api/")
+                && guard::sent_by_another_site(request.header("Sec-Fetch-Site")) =>
+        {
+            Answer::error(403, "refused: the lab's API answers its own page only")
         }
-    };
-    let mut response = Response::from_data(answer.body).with_status_code(answer.status);
-    for (field, value) in [
-        ("Content-Type", answer.content_type),
-        ("Cache-Control", "no-store"),
-        ("X-Content-Type-Options", "nosniff"),
-        ("Referrer-Policy", "no-referrer"),
-        (
-            "Content-Security-Policy",
-            "default-src 'self'; img-src 'self' data:; style-src 'self'; script-src 'self'; \
-             frame-ancestors 'none'; base-uri 'none'",
+        Verdict::Allowed { path, query } => routes::answer(state, &path, query),
+        Verdict::ForeignHost => Answer::error(
+            403,
+            "refused: the Host header is not the loopback address (127.0.0.1 or localhost)",
         ),
-    ] {
-        if let Ok(header) = Header::from_bytes(field.as_bytes(), value.as_bytes()) {
-            response.add_header(header);
-        }
+        Verdict::NotFound => Answer::not_found(),
     }
-    let _ = request.respond(response);
 }

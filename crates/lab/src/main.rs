@@ -1,6 +1,9 @@
 //! `cargo run -q -p lab`: the student's lab bench in the browser.
 
-use std::process::{Command, ExitCode, Stdio};
+use std::process::ExitCode;
+use std::time::Duration;
+
+use lab::launch::{RedirectFile, open_with, openers};
 
 use clap::Parser;
 
@@ -41,21 +44,27 @@ fn main() -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// Opens `url` with xdg-open (macOS: open), if there is one. (Not `open`
-/// elsewhere: on Debian that is openvt.)
+/// How long the redirecting page is kept: the browser reads it once, when
+/// it starts (the lab ends by Ctrl-C, with no chance to clean up).
+const KEEP_THE_PAGE: Duration = Duration::from_secs(60);
+
+/// Opens `url` in the browser through a page only the user can read (see
+/// [`lab::launch`]: never the address itself on a command line), if there
+/// is an opener; the page is removed after [`KEEP_THE_PAGE`].
 fn open(url: &str) -> bool {
-    let programs: &[&str] = if cfg!(target_os = "macos") {
-        &["open"]
-    } else {
-        &["xdg-open"]
+    let page = match RedirectFile::new(url) {
+        Ok(page) => page,
+        Err(e) => {
+            eprintln!("cannot write the page that opens the lab: {e}");
+            return false;
+        }
     };
-    programs.iter().any(|program| {
-        Command::new(program)
-            .arg(url)
-            .stdin(Stdio::null())
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .is_ok()
-    })
+    let opened = (openers().iter()).any(|program| open_with(program, page.path()).is_ok());
+    if opened {
+        std::thread::spawn(move || {
+            std::thread::sleep(KEEP_THE_PAGE);
+            drop(page);
+        });
+    }
+    opened
 }
