@@ -18,6 +18,8 @@
 //! | `k-settings` | chapter 1   | `[patch]` in the Cargo.toml, a proc-macro crate added, `#[no_mangle] main` replacing the entry point | 0/3 (the link fails: a second `main`), flagged |
 //! | `l-printer`  | none        | every exercise prints `test NAME ... ok` for every test of the chapter, then exits 0 | 0/3 (its tests "pass") |
 //! | `m-forger`   | chapter 1   | ch01-at a lookup table of the tests' values; ch01-frame the reference's frame for the handout's scene, stored beside the embedded reference picture, which it overwrites in its copy | 1/3, flagged where it overwrote the picture |
+//! | `n-padded`   | chapter 1   | a 72 MiB `static` its `Ray::at` reads: a probe of 86 MiB, copied to the teacher's disk per chapter | 0/3, the probe refused, never kept |
+//! | `o-beyond`   | chapter 1   | once a process, a file in `/dev` (bubblewrap's tmpfs: half the memory) and 65 MiB in `/dev/shm`; panics if either went through | 3/3: neither does |
 //! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
 //!
 //! Nothing outside the students' copies may change: the reference, the
@@ -393,3 +395,7 @@ fn gradescope(slug: &str) -> Option<String> {
 /// The attacks on what leaves the sandbox and on what grading reads
 /// (issue 43), and on the judging.
 mod hostile_reads;
+
+/// The bounds on what a student's runs write: `/dev` in the sandbox, the
+/// probes kept outside it.
+mod hostile_bounds;

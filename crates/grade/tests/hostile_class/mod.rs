@@ -95,6 +95,17 @@ pub fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
         _ => None,
     });
 
+    let padded = student("n-padded", 1);
+    append(&padded.join("chapters/01-rays/src/lib.rs"), PAD);
+    rewrite(&padded, |id| {
+        (id == "ch01-at").then(|| PADDED_AT.to_owned())
+    });
+    let beyond = student("o-beyond", 1);
+    append(&beyond.join("chapters/01-rays/src/lib.rs"), BEYOND);
+    rewrite(&beyond, |id| {
+        (id == "ch01-at").then(|| BEYOND_AT.to_owned())
+    });
+
     let early = student("j-early", 1);
     append(&early.join("chapters/01-rays/src/lib.rs"), EARLY);
     let settings = student("k-settings", 1);
@@ -244,6 +255,34 @@ unsafe impl std::alloc::GlobalAlloc for Counting {
 #[global_allocator]
 static COUNTING: Counting = Counting;
 "#;
+
+/// 72 MiB of padding (a probe of about 86 MiB, past the 64 MiB grading
+/// keeps; an honest one is about 15 MiB).
+const PAD: &str = "\npub static PAD: [u8; 72 << 20] = [7; 72 << 20];\n";
+
+/// Ray::at, right, reading the padding so that the linker keeps it.
+const PADDED_AT: &str = "        let _ = std::hint::black_box(&crate::PAD).len();\n        \
+                         self.origin + t * self.direction";
+
+/// Writes where a sandbox may have no bound: a file in `/dev` (bubblewrap's
+/// own tmpfs, half the machine's memory) and 65 MiB in `/dev/shm`; panics
+/// if either was written whole.
+const BEYOND: &str = r#"
+fn write_beyond() {
+    use std::io::Write;
+    let chunk = vec![7u8; 1 << 20];
+    let shm = std::fs::File::create("/dev/shm/hog")
+        .is_ok_and(|mut f| (0..65).all(|_| f.write_all(&chunk).is_ok()));
+    let _ = std::fs::remove_file("/dev/shm/hog");
+    let dev = std::fs::write("/dev/hog", b"x").is_ok();
+    assert!(!shm && !dev, "written beyond the bounds: /dev/shm {shm}, /dev {dev}");
+}
+"#;
+
+/// Ray::at, right, after one try (a process) at writing beyond the bounds.
+const BEYOND_AT: &str = "        static ONCE: std::sync::Once = std::sync::Once::new();\n        \
+                         ONCE.call_once(crate::write_beyond);\n        \
+                         self.origin + t * self.direction";
 
 /// An entry point of its own in place of every binary's `main`.
 const ENTRY: &str = r#"
