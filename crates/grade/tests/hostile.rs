@@ -20,6 +20,7 @@
 //! | `m-forger`   | chapter 1   | ch01-at a lookup table of the tests' values; ch01-frame the reference's frame for the handout's scene, stored beside the embedded reference picture, which it overwrites in its copy | 1/3, flagged where it overwrote the picture |
 //! | `n-padded`   | chapter 1   | a 72 MiB `static` its `Ray::at` reads: a probe of 86 MiB, copied to the teacher's disk per chapter | 0/3, the probe refused, never kept |
 //! | `o-beyond`   | chapter 1   | once a process, a file in `/dev` (bubblewrap's tmpfs: half the memory) and 65 MiB in `/dev/shm`; panics if either went through | 3/3: neither does |
+//! | `p-verbose`  | chapter 1   | 2000 files added (a flag each); `Ray::at` panics with a 1 MiB line | 2/3, at most 101 flags, every text cut: the report stays small |
 //! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
 //!
 //! Nothing outside the students' copies may change: the reference, the

@@ -57,7 +57,7 @@ pub fn grade(
     let _ = std::fs::remove_dir_all(&copy);
     let _ = std::fs::remove_dir_all(&probes);
     result.seconds = start.elapsed().as_secs_f64();
-    result
+    result.bounded()
 }
 
 /// [`grade`], in the copy at `copy`.

@@ -1,9 +1,10 @@
 //! The hostile class's tests of the bounds on what a student's runs may
-//! write: beyond their build folder inside the sandbox (`/dev`), and out of
-//! it onto the teacher's disk (the probe kept for each chapter). The class
-//! is `hostile.rs`'s, graded once.
+//! write: beyond their build folder inside the sandbox (`/dev`), out of it
+//! onto the teacher's disk (the probe kept for each chapter), and into the
+//! class's outputs (messages and flags). The class is `hostile.rs`'s,
+//! graded once.
 
-use super::{row, score};
+use super::{flags, graded, row, score};
 
 #[test]
 fn a_probe_padded_past_any_honest_size_is_refused_and_never_kept() {
@@ -27,4 +28,26 @@ fn dev_and_dev_shm_take_no_more_than_their_bounds() {
     // Its `Ray::at` panics where a write beyond the bounds went through.
     assert_eq!(score(beyond), ("3", "3"), "{beyond:?}");
     assert_eq!(beyond["troubles"], "", "{beyond:?}");
+}
+
+#[test]
+fn a_megabyte_panic_and_thousands_of_flags_leave_the_outputs_small() {
+    let Some(graded) = graded() else { return };
+    let verbose = &graded.rows["p-verbose"];
+    assert_eq!(score(verbose), ("2", "3"), "ch01-at panics: {verbose:?}");
+    let flags = flags(verbose);
+    assert!(flags.len() <= 101, "{} flags", flags.len());
+    let more = flags
+        .last()
+        .and_then(|f| f.strip_prefix("and ")?.strip_suffix(" more"));
+    assert!(
+        more.is_some_and(|n| n.parse::<usize>().is_ok_and(|n| n >= 1900)),
+        "{:?}",
+        flags.last()
+    );
+    for (column, cell) in verbose {
+        assert!(cell.len() < 20_000, "{column}: {} bytes", cell.len());
+    }
+    let report = std::fs::read_to_string(graded.report.join("index.html")).unwrap();
+    assert!(report.len() < 1 << 20, "the report: {} bytes", report.len());
 }

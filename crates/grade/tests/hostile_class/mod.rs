@@ -105,6 +105,15 @@ pub fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
     rewrite(&beyond, |id| {
         (id == "ch01-at").then(|| BEYOND_AT.to_owned())
     });
+    let verbose = student("p-verbose", 1);
+    let notes = verbose.join("chapters/01-rays/notes");
+    std::fs::create_dir_all(&notes).unwrap();
+    for i in 0..2000 {
+        std::fs::write(notes.join(format!("{i}.md")), "").unwrap();
+    }
+    rewrite(&verbose, |id| {
+        (id == "ch01-at").then(|| "        panic!(\"{}\", \"x\".repeat(1 << 20))".to_owned())
+    });
 
     let early = student("j-early", 1);
     append(&early.join("chapters/01-rays/src/lib.rs"), EARLY);
