@@ -21,6 +21,7 @@
 //! | `n-padded`   | chapter 1   | a 72 MiB `static` its `Ray::at` reads: a probe of 86 MiB, copied to the teacher's disk per chapter | 0/3, the probe refused, never kept |
 //! | `o-beyond`   | chapter 1   | once a process, a file in `/dev` (bubblewrap's tmpfs: half the memory) and 65 MiB in `/dev/shm`; panics if either went through | 3/3: neither does |
 //! | `p-verbose`  | chapter 1   | 2000 files added (a flag each); `Ray::at` panics with a 1 MiB line | 2/3, at most 101 flags, every text cut: the report stays small |
+//! | `q-pictures` | chapter 1   | forty 4 MiB failure pictures, kept on the teacher's disk twice | 3/3, 8 MiB of them kept, flagged |
 //! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
 //!
 //! Nothing outside the students' copies may change: the reference, the

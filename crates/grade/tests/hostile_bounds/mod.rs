@@ -51,3 +51,21 @@ fn a_megabyte_panic_and_thousands_of_flags_leave_the_outputs_small() {
     let report = std::fs::read_to_string(graded.report.join("index.html")).unwrap();
     assert!(report.len() < 1 << 20, "the report: {} bytes", report.len());
 }
+
+#[test]
+fn failure_pictures_leave_the_sandbox_only_up_to_a_chapters_bound() {
+    let Some(graded) = graded() else { return };
+    let pictures = &graded.rows["q-pictures"];
+    assert_eq!(score(pictures), ("3", "3"), "{pictures:?}");
+    let kept = graded.report.join("q-pictures/01-rays");
+    let entries = std::fs::read_dir(&kept).unwrap().flatten();
+    let bytes: u64 = entries.map(|e| e.metadata().unwrap().len()).sum();
+    assert!(bytes <= 8 << 20, "{bytes} bytes of pictures kept");
+    let flags = flags(pictures);
+    assert!(
+        flags
+            .iter()
+            .any(|f| f.contains("beyond the 8 MiB a chapter's may hold")),
+        "{flags:?}"
+    );
+}

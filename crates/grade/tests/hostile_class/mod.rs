@@ -59,6 +59,7 @@ pub fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
     student("zz-honest", 1);
     attacker(&student("d-swapper", 0), "swapper", false);
     attacker(&student("h-panicker", 1), "panicker", true);
+    attacker(&student("q-pictures", 1), "pictures", true);
 
     let record = |dir: &Path, to: &Path| {
         let at = dir.join(".raybook-handout.toml");

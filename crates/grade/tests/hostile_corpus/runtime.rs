@@ -11,7 +11,8 @@ use std::time::{Duration, Instant};
 /// Its own target folder, as the sandbox shows it.
 const TARGET: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../target");
 
-/// The attacks of `@KIND@`: "runtime", "hogs", "swapper" or "panicker".
+/// The attacks of `@KIND@`: "runtime", "hogs", "swapper", "panicker" or
+/// "pictures".
 pub fn attack() {
     match "@KIND@" {
         "runtime" => {
@@ -34,6 +35,7 @@ pub fn attack() {
             let args: Vec<String> = std::env::args().collect();
             panic!("the probe's arguments: {args:?}");
         }
+        "pictures" if !in_probe() => many_pictures(),
         "panicker" => {
             let dir = format!("{TARGET}/snapshot-failures/01-rays");
             let _ = std::fs::create_dir_all(&dir);
@@ -138,6 +140,17 @@ fn leak_pictures() {
     let _ = std::fs::create_dir_all(&dir);
     let _ = std::os::unix::fs::symlink("@SECRET@", format!("{dir}/leak.diff.png"));
     let _ = quiet(Command::new("mkfifo").arg(format!("{dir}/block.diff.png"))).status();
+}
+
+/// Forty failure pictures of 4 MiB each (160 MiB, more than the 32 the
+/// grader takes): what is kept stays on the teacher's disk.
+fn many_pictures() {
+    let dir = format!("{TARGET}/snapshot-failures/01-rays");
+    let _ = std::fs::create_dir_all(&dir);
+    let picture = vec![7u8; 4 << 20];
+    for i in 0..40 {
+        let _ = std::fs::write(format!("{dir}/{i:02}.diff.png"), &picture);
+    }
 }
 
 /// Six children that each grow until their own limit (`tail` of an
