@@ -22,6 +22,7 @@
 //! | `o-beyond`   | chapter 1   | once a process, a file in `/dev` (bubblewrap's tmpfs: half the memory) and 65 MiB in `/dev/shm`; panics if either went through | 3/3: neither does |
 //! | `p-verbose`  | chapter 1   | 2000 files added (a flag each); `Ray::at` panics with a 1 MiB line | 2/3, at most 101 flags, every text cut: the report stays small |
 //! | `q-pictures` | chapter 1   | forty 4 MiB failure pictures, kept on the teacher's disk twice | 3/3, 8 MiB of them kept, flagged |
+//! | `r-slow-scan` | chapter 1  | three 8 MiB sources of `#[`, `include!(r#"` and `include!(x)` lines, each read again from every one (days) | 3/3, read in one pass, 100 flags a file |
 //! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
 //!
 //! Nothing outside the students' copies may change: the reference, the

@@ -69,3 +69,20 @@ fn failure_pictures_leave_the_sandbox_only_up_to_a_chapters_bound() {
         "{flags:?}"
     );
 }
+
+#[test]
+fn sources_made_to_be_slow_to_scan_are_scanned_in_one_pass() {
+    // Before, each of its three files took days of the grader's time, and
+    // the class's grading never ended.
+    let Some(slow) = row("r-slow-scan") else {
+        return;
+    };
+    assert_eq!(score(slow), ("3", "3"), "{slow:?}");
+    let flags = flags(slow);
+    assert!(
+        flags
+            .iter()
+            .any(|f| f.ends_with("slow2.rs: more of them, not listed")),
+        "{flags:?}"
+    );
+}

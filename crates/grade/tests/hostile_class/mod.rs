@@ -115,6 +115,11 @@ pub fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
     rewrite(&verbose, |id| {
         (id == "ch01-at").then(|| "        panic!(\"{}\", \"x\".repeat(1 << 20))".to_owned())
     });
+    let slow = student("r-slow-scan", 1);
+    for (i, unit) in ["#[", "include!(r#\"", "include!(x)\n"].iter().enumerate() {
+        let text = unit.repeat((8 << 20) / unit.len());
+        std::fs::write(slow.join(format!("chapters/01-rays/src/slow{i}.rs")), text).unwrap();
+    }
 
     let early = student("j-early", 1);
     append(&early.join("chapters/01-rays/src/lib.rs"), EARLY);
