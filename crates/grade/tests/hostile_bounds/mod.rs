@@ -79,10 +79,6 @@ fn sources_made_to_be_slow_to_scan_are_scanned_in_one_pass() {
     };
     assert_eq!(score(slow), ("3", "3"), "{slow:?}");
     let flags = flags(slow);
-    assert!(
-        flags
-            .iter()
-            .any(|f| f.ends_with("slow2.rs: more of them, not listed")),
-        "{flags:?}"
-    );
+    let first = "chapters/01-rays/src/slow1.rs:1: include! reaches outside its folder";
+    assert!(flags.iter().any(|f| f.starts_with(first)), "{flags:?}");
 }
