@@ -23,6 +23,7 @@
 //! | `p-verbose`  | chapter 1   | 2000 files added (a flag each); `Ray::at` panics with a 1 MiB line | 2/3, at most 101 flags, every text cut: the report stays small |
 //! | `q-pictures` | chapter 1   | forty 4 MiB failure pictures, kept on the teacher's disk twice | 3/3, 8 MiB of them kept, flagged |
 //! | `r-slow-scan` | chapter 1  | three 8 MiB sources of `#[`, `include!(r#"` and `include!(x)` lines, each read again from every one (days) | 3/3, read in one pass, 100 flags a file |
+//! | `s-flood`    | chapter 1   | its tests print 12 MiB of made-up failures and panics (a quarter of a million names) | 3/3, read in one pass |
 //! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
 //!
 //! Nothing outside the students' copies may change: the reference, the

@@ -60,6 +60,7 @@ pub fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
     attacker(&student("d-swapper", 0), "swapper", false);
     attacker(&student("h-panicker", 1), "panicker", true);
     attacker(&student("q-pictures", 1), "pictures", true);
+    attacker(&student("s-flood", 1), "flood", true);
 
     let record = |dir: &Path, to: &Path| {
         let at = dir.join(".raybook-handout.toml");

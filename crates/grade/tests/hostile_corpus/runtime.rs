@@ -11,8 +11,8 @@ use std::time::{Duration, Instant};
 /// Its own target folder, as the sandbox shows it.
 const TARGET: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../target");
 
-/// The attacks of `@KIND@`: "runtime", "hogs", "swapper", "panicker" or
-/// "pictures".
+/// The attacks of `@KIND@`: "runtime", "hogs", "swapper", "panicker",
+/// "pictures" or "flood".
 pub fn attack() {
     match "@KIND@" {
         "runtime" => {
@@ -36,6 +36,7 @@ pub fn attack() {
             panic!("the probe's arguments: {args:?}");
         }
         "pictures" if !in_probe() => many_pictures(),
+        "flood" if !in_probe() => made_up_failures(),
         "panicker" => {
             let dir = format!("{TARGET}/snapshot-failures/01-rays");
             let _ = std::fs::create_dir_all(&dir);
@@ -151,6 +152,19 @@ fn many_pictures() {
     for i in 0..40 {
         let _ = std::fs::write(format!("{dir}/{i:02}.diff.png"), &picture);
     }
+}
+
+/// 12 MiB of made-up failures, each with its panic, past libtest's
+/// capture: what the grader reads of a test run, a quarter of a million
+/// names.
+fn made_up_failures() {
+    let mut text = String::new();
+    let mut i = 0;
+    while text.len() < 12 << 20 {
+        text += &format!("thread 't{i}' panicked at x:1:1:\nm\ntest f{i} ... FAILED\n");
+        i += 1;
+    }
+    let _ = std::io::stdout().write_all(text.as_bytes());
 }
 
 /// Six children that each grow until their own limit (`tail` of an
