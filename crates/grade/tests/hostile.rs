@@ -18,7 +18,7 @@
 //! | `k-settings` | chapter 1   | `[patch]` in the Cargo.toml, a proc-macro crate added, `#[no_mangle] main` replacing the entry point | 0/3 (the link fails: a second `main`), flagged |
 //! | `l-printer`  | none        | every exercise prints `test NAME ... ok` for every test of the chapter, then exits 0 | 0/3 (its tests "pass") |
 //! | `m-forger`   | chapter 1   | ch01-at a lookup table of the tests' values; ch01-frame the reference's frame for the handout's scene, stored beside the embedded reference picture, which it overwrites in its copy | 1/3, flagged where it overwrote the picture |
-//! | `n-padded`   | chapter 1   | a 72 MiB `static` its `Ray::at` reads: a probe of 86 MiB, copied to the teacher's disk per chapter | 0/3, the probe refused, never kept |
+//! | `n-padded`   | chapter 1   | 75 MiB of noise `include_bytes!`'d into a `static` its `Ray::at` reads: a probe of 90 MiB, copied to the teacher's disk per chapter | 0/3, the probe refused, never kept |
 //! | `o-beyond`   | chapter 1   | once a process, a file in `/dev` (bubblewrap's tmpfs: half the memory) and 65 MiB in `/dev/shm`; panics if either went through | 3/3: neither does |
 //! | `p-verbose`  | chapter 1   | 2000 files added (a flag each); `Ray::at` panics with a 1 MiB line | 2/3, at most 101 flags, every text cut: the report stays small |
 //! | `q-pictures` | chapter 1   | forty 4 MiB failure pictures, kept on the teacher's disk twice | 3/3, 8 MiB of them kept, flagged |

@@ -98,7 +98,7 @@ pub fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
     });
 
     let padded = student("n-padded", 1);
-    append(&padded.join("chapters/01-rays/src/lib.rs"), PAD);
+    pad(&padded.join("chapters/01-rays/src"));
     rewrite(&padded, |id| {
         (id == "ch01-at").then(|| PADDED_AT.to_owned())
     });
@@ -272,9 +272,30 @@ unsafe impl std::alloc::GlobalAlloc for Counting {
 static COUNTING: Counting = Counting;
 "#;
 
-/// 72 MiB of padding (a probe of about 86 MiB, past the 64 MiB grading
-/// keeps; an honest one is about 15 MiB).
-const PAD: &str = "\npub static PAD: [u8; 72 << 20] = [7; 72 << 20];\n";
+/// 75 MiB of padding in `src` (a probe of about 90 MiB, past the 64 MiB
+/// grading keeps; an honest one is about 15 MiB): five files of 15 MiB of
+/// noise (alike, the linker would keep one), each taken in by
+/// `include_bytes!` into `PAD`. (A `static` array as large makes rustc
+/// run out of its address space.)
+fn pad(src: &Path) {
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut names = Vec::new();
+    for i in 0..5 {
+        let noise: Vec<u8> = (0..(15 << 20) / 8)
+            .flat_map(|_| {
+                // xorshift64: noise that no compressor or linker merges.
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                state.to_le_bytes()
+            })
+            .collect();
+        std::fs::write(src.join(format!("pad{i}.bin")), noise).unwrap();
+        names.push(format!("include_bytes!(\"pad{i}.bin\")"));
+    }
+    let code = format!("\npub static PAD: [&[u8]; 5] = [{}];\n", names.join(", "));
+    append(&src.join("lib.rs"), &code);
+}
 
 /// Ray::at, right, reading the padding so that the linker keeps it.
 const PADDED_AT: &str = "        let _ = std::hint::black_box(&crate::PAD).len();\n        \
