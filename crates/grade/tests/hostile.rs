@@ -12,7 +12,7 @@
 //! | `e-record-secret` | chapter 1 | `.raybook-handout.toml` a link to a teacher's secret; a 1 GiB sparse file in `src/` | 3/3, both flagged, the secret never quoted |
 //! | `f-record-stdin` | chapter 1 | the record a link to `/dev/stdin`; a FIFO in `src/` | 3/3, flagged, the class never waits |
 //! | `g-record-zero` | chapter 1 | the record a link to `/dev/zero` | 3/3, flagged, nothing read |
-//! | `h-panicker` | chapter 1   | in the probe, `at` panics with the probe's arguments (the seed); in its tests, a failure picture named with ESC and CR | 2/3, nothing of the probe in its Gradescope output, the picture refused |
+//! | `h-panicker` | chapter 1   | in the probe, `at` leaves a symlink named with the seed in its build folder, then panics with the probe's arguments; in its tests, a failure picture named with ESC and CR | 2/3, nothing of the probe in its Gradescope output, the picture refused |
 //! | `i-new⏎zz-fake,3,3` | none | its name a line break and a forged row; a file named with ESC and CR | 0/3, one line everywhere |
 //! | `j-early`    | chapter 1   | an `.init_array` constructor that forges a record on the pipe before `main`, and a `#[global_allocator]` of its own | 0/3 (the forged values are worth nothing), no crash |
 //! | `k-settings` | chapter 1   | `[patch]` in the Cargo.toml, a proc-macro crate added, `#[no_mangle] main` replacing the entry point | 0/3 (the link fails: a second `main`), flagged |

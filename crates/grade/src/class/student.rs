@@ -100,6 +100,10 @@ fn grade_in(
         chapter_run.pictures = keep_pictures(&place, chapter, pictures, &mut result.flags)?;
         runs.push((chapter, chapter_run, from_tests));
     }
+    // What the tests left in the build folder, looked through before the
+    // probes run: a file the probe's run leaves could be named with what
+    // the probe was given (the seed), and the flags reach the student.
+    result.flags.extend(crate::judging::rule::touched(&place));
     for (chapter, chapter_run, from_tests) in runs {
         let judged = crate::judging::rule::chapter(
             &place,
@@ -112,7 +116,6 @@ fn grade_in(
         result.exercises.extend(judged);
         result.chapters.push(chapter_run);
     }
-    result.flags.extend(crate::judging::rule::touched(&place));
     result.notes.extend(place.notes());
     let contradictions = crate::judging::rule::contradictions(&result.exercises, &result.chapters);
     result.flags.extend(contradictions);
