@@ -12,12 +12,18 @@
 //! | `e-record-secret` | chapter 1 | `.raybook-handout.toml` a link to a teacher's secret; a 1 GiB sparse file in `src/` | 3/3, both flagged, the secret never quoted |
 //! | `f-record-stdin` | chapter 1 | the record a link to `/dev/stdin`; a FIFO in `src/` | 3/3, flagged, the class never waits |
 //! | `g-record-zero` | chapter 1 | the record a link to `/dev/zero` | 3/3, flagged, nothing read |
-//! | `h-panicker` | chapter 1   | in the probe, `at` panics with the probe's arguments (the seed); in its tests, a failure picture named with ESC and CR | 2/3, nothing of the probe in its Gradescope output, the picture refused |
+//! | `h-panicker` | chapter 1   | in the probe, `at` leaves a symlink named with the seed in its build folder, then panics with the probe's arguments; in its tests, a failure picture named with ESC and CR | 2/3, nothing of the probe in its Gradescope output, the picture refused |
 //! | `i-new⏎zz-fake,3,3` | none | its name a line break and a forged row; a file named with ESC and CR | 0/3, one line everywhere |
 //! | `j-early`    | chapter 1   | an `.init_array` constructor that forges a record on the pipe before `main`, and a `#[global_allocator]` of its own | 0/3 (the forged values are worth nothing), no crash |
 //! | `k-settings` | chapter 1   | `[patch]` in the Cargo.toml, a proc-macro crate added, `#[no_mangle] main` replacing the entry point | 0/3 (the link fails: a second `main`), flagged |
 //! | `l-printer`  | none        | every exercise prints `test NAME ... ok` for every test of the chapter, then exits 0 | 0/3 (its tests "pass") |
 //! | `m-forger`   | chapter 1   | ch01-at a lookup table of the tests' values; ch01-frame the reference's frame for the handout's scene, stored beside the embedded reference picture, which it overwrites in its copy | 1/3, flagged where it overwrote the picture |
+//! | `n-padded`   | chapter 1   | 75 MiB of noise `include_bytes!`'d into a `static` its `Ray::at` reads: a probe of 90 MiB, copied to the teacher's disk per chapter | 0/3, the probe refused, never kept |
+//! | `o-beyond`   | chapter 1   | once a process, a file in `/dev` (bubblewrap's tmpfs: half the memory) and 65 MiB in `/dev/shm`; panics if either went through | 3/3: neither does |
+//! | `p-verbose`  | chapter 1   | 2000 files added (a flag each); `Ray::at` panics with a 1 MiB line | 2/3, at most 101 flags, every text cut: the report stays small |
+//! | `q-pictures` | chapter 1   | forty 4 MiB failure pictures, kept on the teacher's disk twice | 3/3, 8 MiB of them kept, flagged |
+//! | `r-slow-scan` | chapter 1  | three 8 MiB sources of `#[`, `include!(r#"` and `include!(x)` lines, each read again from every one (days) | 3/3, read in one pass, 100 flags a file |
+//! | `s-flood`    | chapter 1   | its tests print 12 MiB of made-up failures and panics (a quarter of a million names) | 3/3, read in one pass |
 //! | `zz-honest`  | chapter 1   | nothing, graded after the others                       | 3/3, no flag             |
 //!
 //! Nothing outside the students' copies may change: the reference, the
@@ -393,3 +399,7 @@ fn gradescope(slug: &str) -> Option<String> {
 /// The attacks on what leaves the sandbox and on what grading reads
 /// (issue 43), and on the judging.
 mod hostile_reads;
+
+/// The bounds on what a student's runs write: `/dev` in the sandbox, the
+/// probes kept outside it.
+mod hostile_bounds;

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::Arc;
 
-use crate::sandbox::beneath::Folder;
+use crate::sandbox::beneath::{Folder, Refused};
 use crate::sandbox::build_folder::BuildFolder;
 use crate::sandbox::bwrap::{Setup, confined};
 use workbench::exercise::TAKE_OUT;
@@ -35,6 +35,15 @@ pub struct Place {
 
 /// Where a student's runs see their probes (a read-only mount).
 pub const PROBES: &str = "/raybook-probes";
+
+/// The largest probe grading keeps. Each chapter's probe is copied out of
+/// the student's build folder (bounded by `--disk`) into the grader's own
+/// folder on the teacher's disk, and read whole into memory on the way:
+/// without a bound, code padded with a large `static` would put up to
+/// `--disk` on the teacher's disk for every chapter graded. An honest
+/// probe is about 15 MiB (a debug build of chapters 1 to 7 with the
+/// probe); four times that leaves room for any honest code.
+pub const MOST_PROBE: u64 = 64 << 20;
 
 impl Place {
     /// The place of a copy: its target folder and scratch folder inside it.
@@ -83,15 +92,23 @@ impl Place {
 
     /// Keeps the probe just built (`target/debug/grade-probe`) as the
     /// probe of `chapter` (`ch03`), in the grader's own folder, before any
-    /// of the student's code runs; later runs cannot change it.
+    /// of the student's code runs; later runs cannot change it. A probe
+    /// larger than [`MOST_PROBE`] is refused, never read.
     pub fn keep_probe(&self, chapter: &str) -> Result<(), String> {
         let Some(probes) = &self.probes else {
             return Ok(());
         };
         let by = std::time::Instant::now() + std::time::Duration::from_secs(60);
-        let bytes = (self.target_folder()?)
-            .read(Path::new("debug/grade-probe"), 1 << 30, by)
-            .map_err(|why| format!("the probe just built: {why}"))?;
+        let read = (self.target_folder()?).read(Path::new("debug/grade-probe"), MOST_PROBE, by);
+        let bytes = read.map_err(|why| match why {
+            Refused::TooLarge(size) => format!(
+                "the probe just built is {} MiB, more than the {} MiB grading keeps \
+                 (an honest one is about 15 MiB): refused",
+                size >> 20,
+                MOST_PROBE >> 20
+            ),
+            why => format!("the probe just built: {why}"),
+        })?;
         let kept = probes.join(chapter);
         std::fs::write(&kept, bytes).map_err(|e| format!("cannot keep the probe: {e}"))?;
         std::fs::set_permissions(&kept, std::os::unix::fs::PermissionsExt::from_mode(0o555))
@@ -248,4 +265,37 @@ pub fn test_binaries(messages: &str, package_dir: &Path) -> Vec<TestBinary> {
         }
     }
     found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A place of `copy` whose probes are kept in `probes`, unsandboxed.
+    fn place(copy: &Path, probes: &Path) -> Place {
+        let mut place = Place::of(copy, &Arc::new(Setup::none()));
+        place.probes = Some(probes.to_owned());
+        place
+    }
+
+    #[test]
+    fn a_probe_padded_past_the_bound_is_refused_unread_and_an_honest_one_kept() {
+        let dir = tempfile::tempdir().unwrap();
+        let (copy, probes) = (dir.path().join("copy"), dir.path().join("probes"));
+        std::fs::create_dir_all(copy.join("target/debug")).unwrap();
+        std::fs::create_dir_all(&probes).unwrap();
+        let built = copy.join("target/debug/grade-probe");
+        // Sparse: its size is what a padded build writes, its pages are not.
+        let padded = std::fs::File::create(&built).unwrap();
+        padded.set_len(MOST_PROBE + 1).unwrap();
+        let refused = place(&copy, &probes).keep_probe("ch01").unwrap_err();
+        assert!(refused.contains("more than the 64 MiB"), "{refused}");
+        assert!(!probes.join("ch01").exists(), "nothing kept");
+        std::fs::write(&built, b"an honest probe").unwrap();
+        place(&copy, &probes).keep_probe("ch01").unwrap();
+        assert_eq!(
+            std::fs::read(probes.join("ch01")).unwrap(),
+            b"an honest probe"
+        );
+    }
 }

@@ -16,11 +16,19 @@ use std::path::{Component, Path, PathBuf};
 /// The macros that read a file at compile time.
 const INCLUDES: [&str; 3] = ["include_bytes", "include_str", "include"];
 
+/// The most of them listed for one file, then a line saying there are more.
+pub const MOST_FOUND: usize = 100;
+
 /// What in `text` (the file `file`, relative to the handout, of the
-/// student's folder `folder`) reaches outside `folder`: one line each.
+/// student's folder `folder`) reaches outside `folder`: one line each, at
+/// most [`MOST_FOUND`]. The text is read in one pass, whatever it holds (a
+/// student's file of 16 MiB made of `#[` or `include!(x)` would otherwise
+/// be read again from each of them: days of the grader's time).
 pub fn reaching(text: &str, file: &Path, folder: &Path) -> Vec<String> {
     let mut found = Vec::new();
-    let line_of = |at: usize| text[..at].matches('\n').count() + 1;
+    // The line of byte `at`: one more than the line breaks before it.
+    let breaks: Vec<usize> = text.match_indices('\n').map(|(at, _)| at).collect();
+    let line_of = |at: usize| breaks.partition_point(|&b| b < at) + 1;
     let here = file.parent().unwrap_or(Path::new(""));
     for (at, what, argument) in includes(text).into_iter().chain(paths(text)) {
         // A module's #[path] is relative to the file's folder; inside an
@@ -39,6 +47,10 @@ pub fn reaching(text: &str, file: &Path, folder: &Path) -> Vec<String> {
             Some(_) => None,
         };
         if let Some(why) = why {
+            if found.len() == MOST_FOUND {
+                found.push(format!("{}: more of them, not listed", file.display()));
+                break;
+            }
             found.push(format!(
                 "{}:{}: {what} reaches outside its folder ({why})",
                 file.display(),
@@ -120,6 +132,10 @@ fn paths(text: &str) -> Vec<(usize, &'static str, Option<String>)> {
         };
         let end = body.find(']').map_or(body.len(), |e| e + 1);
         let attribute = &body[..end];
+        // Go on after the attribute: a `#[` inside it ends at the same `]`,
+        // so its `path`s are among this one's; and a text with no `]` is
+        // read once, not once for every `#[` in it.
+        from = text.len() - body.len() + end;
         let mut search = 0;
         while let Some(p) = attribute[search..].find("path") {
             let start = search + p;
@@ -141,6 +157,22 @@ fn paths(text: &str) -> Vec<(usize, &'static str, Option<String>)> {
     found
 }
 
+/// The longest path a literal is read for: its end is looked for no
+/// further, so that a literal never closed costs a short look, not a read
+/// to the end of the file (for each of a million of them). The paths of a
+/// handout's sources are a few dozen bytes; a longer one is not read, so
+/// it is flagged, never missed.
+const LONGEST: usize = 256;
+
+/// The first [`LONGEST`] bytes of `text` (or fewer, to end on a character).
+fn window(text: &str) -> &str {
+    let mut end = text.len().min(LONGEST);
+    while !text.is_char_boundary(end) {
+        end -= 1;
+    }
+    &text[..end]
+}
+
 /// The string literal at the start of `text`, if it is followed by one of
 /// `ends` (after blanks or a comma): a plain path; else none.
 fn literal_alone(text: &str, ends: [char; 3]) -> Option<String> {
@@ -149,11 +181,11 @@ fn literal_alone(text: &str, ends: [char; 3]) -> Option<String> {
         let hashes = raw.len() - raw.trim_start_matches('#').len();
         let body = raw[hashes..].strip_prefix('"')?;
         let close = format!("\"{}", "#".repeat(hashes));
-        let end = body.find(&close)?;
+        let end = window(body).find(&close)?;
         (body[..end].to_owned(), &body[end + close.len()..])
     } else {
         let body = text.strip_prefix('"')?;
-        let end = body.find('"')?;
+        let end = window(body).find('"')?;
         let value = &body[..end];
         if value.contains('\\') {
             return None;
@@ -172,6 +204,35 @@ mod tests {
     fn flags(text: &str) -> Vec<String> {
         let file = Path::new("chapters/01-rays/src/lib.rs");
         reaching(text, file, Path::new("chapters/01-rays"))
+    }
+
+    /// Texts made to be slow to scan: an attribute never closed after
+    /// each `#[`, a raw string never closed after each `include!`, and a
+    /// flag on every line of a long file (each line counted from the top).
+    fn slow_texts(size: usize) -> [String; 3] {
+        let repeat = |unit: &str| unit.repeat(size / unit.len());
+        [
+            repeat("#["),
+            repeat("include!(r#\""),
+            repeat("include!(x)\n"),
+        ]
+    }
+
+    #[test]
+    fn a_file_made_to_be_slow_to_scan_is_scanned_in_one_pass() {
+        for text in slow_texts(4 << 20) {
+            let start = std::time::Instant::now();
+            let found = flags(&text);
+            let took = start.elapsed();
+            assert!(found.len() <= MOST_FOUND + 1, "{} flags", found.len());
+            // One pass takes a second at most; a read from each of them
+            // took a minute for a 256 KiB file, and grows as its square.
+            assert!(took.as_secs() < 20, "{:?}: {took:?}", &text[..12]);
+        }
+        let many = flags(&slow_texts(1 << 20)[2]);
+        assert_eq!(many.len(), MOST_FOUND + 1);
+        assert!(many[MOST_FOUND - 1].starts_with("chapters/01-rays/src/lib.rs:100: include!"));
+        assert!(many[MOST_FOUND].ends_with("more of them, not listed"));
     }
 
     #[test]

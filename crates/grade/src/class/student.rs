@@ -57,7 +57,7 @@ pub fn grade(
     let _ = std::fs::remove_dir_all(&copy);
     let _ = std::fs::remove_dir_all(&probes);
     result.seconds = start.elapsed().as_secs_f64();
-    result
+    result.bounded()
 }
 
 /// [`grade`], in the copy at `copy`.
@@ -100,6 +100,10 @@ fn grade_in(
         chapter_run.pictures = keep_pictures(&place, chapter, pictures, &mut result.flags)?;
         runs.push((chapter, chapter_run, from_tests));
     }
+    // What the tests left in the build folder, looked through before the
+    // probes run: a file the probe's run leaves could be named with what
+    // the probe was given (the seed), and the flags reach the student.
+    result.flags.extend(crate::judging::rule::touched(&place));
     for (chapter, chapter_run, from_tests) in runs {
         let judged = crate::judging::rule::chapter(
             &place,
@@ -112,7 +116,6 @@ fn grade_in(
         result.exercises.extend(judged);
         result.chapters.push(chapter_run);
     }
-    result.flags.extend(crate::judging::rule::touched(&place));
     result.notes.extend(place.notes());
     let contradictions = crate::judging::rule::contradictions(&result.exercises, &result.chapters);
     result.flags.extend(contradictions);
@@ -302,7 +305,8 @@ fn judge(
 /// `pictures/<folder>/`; the list of them, relative to the report folder
 /// (`pictures`' parent). Everything is read beneath the build folder with
 /// no link on the way (`sandbox/beneath.rs`): a regular file of a bounded size,
-/// with a clean name, at most [`MOST_PICTURES`] of them, within a time.
+/// with a clean name, at most [`MOST_PICTURES`] of them and
+/// [`outbound::MAX_CHAPTER_BYTES`] together, within a time.
 /// What else stands there is refused, and `flags` say so.
 fn keep_pictures(
     place: &Place,
@@ -324,7 +328,7 @@ fn keep_pictures(
     };
     let by = Instant::now() + outbound::MAX_TIME;
     let slug = pictures.file_name().unwrap_or_default().to_string_lossy();
-    let mut kept = Vec::new();
+    let (mut kept, mut bytes_kept) = (Vec::new(), 0);
     for (name, _) in entries {
         let name = name.to_string_lossy();
         let Some(stem) = name.strip_suffix(".diff.png") else {
@@ -343,14 +347,24 @@ fn keep_pictures(
             ));
             break;
         }
-        let read = failures.read(Path::new(&*name), outbound::MAX_BYTES, by);
+        let room = outbound::MAX_CHAPTER_BYTES - bytes_kept;
+        let read = failures.read(Path::new(&*name), outbound::MAX_BYTES.min(room), by);
         let bytes = match read {
             Ok(bytes) => bytes,
+            Err(Refused::TooLarge(_)) if room < outbound::MAX_BYTES => {
+                flags.push(format!(
+                    "failure pictures in {shown} beyond the {} MiB a chapter's may hold: \
+                     the rest refused",
+                    outbound::MAX_CHAPTER_BYTES >> 20
+                ));
+                break;
+            }
             Err(why) => {
                 flags.push(format!("failure picture {shown}/{name}: {why}"));
                 continue;
             }
         };
+        bytes_kept += bytes.len() as u64;
         let to = pictures.join(&chapter.folder).join(&*name);
         outbound::write(&to, &bytes)?;
         let diff = format!("{slug}/{}/{name}", chapter.folder);

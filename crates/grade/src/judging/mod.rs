@@ -7,8 +7,11 @@
 
 /// The version of what grading caches (the tests of each exercise, each
 /// student's result): a new one when what they mean changes, so that a
-/// cache of an older workbook is never read as this one's.
-pub const CACHE_FORMAT: &str = "grade-cache-2";
+/// cache of an older workbook is never read as this one's, and when the
+/// grader stops an attack it let through, so that a result it cached for
+/// unchanged files is judged again (3: probes past 64 MiB refused, texts
+/// and flags bounded).
+pub const CACHE_FORMAT: &str = "grade-cache-3";
 
 pub mod exercise_tests;
 pub mod outcomes;

@@ -293,7 +293,9 @@ pub fn contradictions(verdicts: &[Verdict], runs: &[ChapterRun]) -> Vec<String> 
 /// test writes: a symlink (a folder swapped for a link), a FIFO, a socket,
 /// a device, a cargo setting. Each is a flag: the run touched more than
 /// its chapters' sources and their build. Walked beneath the folder, no
-/// link followed (`sandbox/beneath.rs`).
+/// link followed (`sandbox/beneath.rs`), before the probes run: these
+/// flags reach the student, and a name left by a probe's run could carry
+/// what the probe was given.
 pub fn touched(place: &Place) -> Vec<String> {
     let walked = place
         .target_folder()

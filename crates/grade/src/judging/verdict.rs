@@ -186,6 +186,37 @@ impl StudentResult {
         self.exercises.iter().find(|v| v.id == id)
     }
 
+    /// This result with every text cut to [`MOST_CHARS`] characters and
+    /// each list of flags, notes and warnings to [`MOST_LINES`] (and a line
+    /// saying how many more). A student makes both as large as they like
+    /// (a panic message of one 16 MiB line, a hundred thousand files added
+    /// each flagged by its path), and every output repeats them: the HTML
+    /// report twice, the gradebook, JUnit, the cache. Bounded here, no
+    /// student makes the class's report too large to open.
+    pub fn bounded(mut self) -> StudentResult {
+        let texts = (self.refused.iter_mut())
+            .chain(
+                self.chapters
+                    .iter_mut()
+                    .flat_map(|c| (c.compile_error.iter_mut()).chain(c.trouble.iter_mut())),
+            )
+            .chain(
+                self.exercises
+                    .iter_mut()
+                    .flat_map(|v| (v.message.iter_mut()).chain(v.feedback.iter_mut())),
+            );
+        texts.for_each(cut);
+        for list in [&mut self.flags, &mut self.notes, &mut self.warnings] {
+            if list.len() > MOST_LINES {
+                let more = list.len() - MOST_LINES;
+                list.truncate(MOST_LINES);
+                list.push(format!("and {more} more"));
+            }
+            list.iter_mut().for_each(cut);
+        }
+        self
+    }
+
     /// What stopped any chapter's run, one line per chapter.
     pub fn troubles(&self) -> Vec<String> {
         self.chapters
@@ -197,5 +228,63 @@ impl StudentResult {
                 Some(format!("{}: {what}", c.folder))
             })
             .collect()
+    }
+}
+
+/// The most characters a result keeps of one text (a message, a flag):
+/// far more than any of the grader's own, or an honest panic's.
+pub const MOST_CHARS: usize = 1000;
+
+/// The most flags, notes or warnings a result keeps.
+pub const MOST_LINES: usize = 100;
+
+/// `text` cut to [`MOST_CHARS`] characters, with `…` where it was cut.
+fn cut(text: &mut String) {
+    if let Some((at, _)) = text.char_indices().nth(MOST_CHARS) {
+        text.truncate(at);
+        text.push('…');
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_result_keeps_bounded_texts_and_lists_whatever_a_student_made() {
+        let long = "é".repeat(1 << 20);
+        let result = StudentResult {
+            flags: (0..100_000)
+                .map(|i| format!("added chapters/x/{i}.md"))
+                .collect(),
+            notes: vec![long.clone()],
+            chapters: vec![ChapterRun {
+                compile_error: Some(long.clone()),
+                trouble: Some(long.clone()),
+                ..ChapterRun::default()
+            }],
+            exercises: vec![Verdict {
+                message: Some(long.clone()),
+                feedback: Some(format!("test t: {long}")),
+                ..Verdict::default()
+            }],
+            ..StudentResult::default()
+        }
+        .bounded();
+        assert_eq!(result.flags.len(), MOST_LINES + 1);
+        assert_eq!(result.flags[MOST_LINES], "and 99900 more");
+        assert_eq!(result.flags[0], "added chapters/x/0.md", "short texts kept");
+        let run = &result.chapters[0];
+        let verdict = &result.exercises[0];
+        for text in [
+            &result.notes[0],
+            run.compile_error.as_ref().unwrap(),
+            run.trouble.as_ref().unwrap(),
+            verdict.message.as_ref().unwrap(),
+            verdict.feedback.as_ref().unwrap(),
+        ] {
+            assert_eq!(text.chars().count(), MOST_CHARS + 1, "cut, with its …");
+            assert!(text.ends_with('…'));
+        }
     }
 }

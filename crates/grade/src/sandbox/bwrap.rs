@@ -30,7 +30,13 @@
 //!   student's grading and is entered with `nsenter` for each command). The
 //!   shared build artefacts are copies in it (`build/share.rs`), so nothing
 //!   writable there is anyone else's;
-//! * a new `/proc`, a minimal `/dev`, and a small `/tmp`.
+//! * a new `/proc`, a minimal `/dev`, a small `/tmp` and a small `/dev/shm`.
+//!   Every place a run may write has a size: bubblewrap's `/dev` is a tmpfs
+//!   of its own, as large as half the machine's memory and writable, so it
+//!   is remounted read-only once its devices and `/dev/shm` are in it (a
+//!   device node still reads and writes as a device). Otherwise a run could
+//!   put gigabytes there, beyond `--disk`, and, where no control group
+//!   counts the pages, beyond `--memory` too.
 //!
 //! Other students' copies, the reference's sources, the teacher's files,
 //! outputs and caches, the host's `/tmp` and `/run` (and their sockets) are
@@ -105,7 +111,7 @@ fn check(setup: &Setup) -> Result<(), String> {
     let result = (|| {
         let build = BuildFolder::new(&copy.join("target"), setup)?;
         let script = "echo ok > target/ok && ! (echo no > copy-file) 2>/dev/null \
-                      && ! test -e ../beside";
+                      && ! (echo no > /dev/unbounded) 2>/dev/null && ! test -e ../beside";
         let mut command = in_bwrap(
             (&copy, &copy),
             (Some(&build), None),
@@ -215,6 +221,10 @@ const ETC: [&str; 8] = [
     "localtime",
 ];
 
+/// The size of a run's `/tmp` and of its `/dev/shm`, in bytes (64 MiB):
+/// its scratch room is its build folder's `scratch/` (`TMPDIR`).
+const SCRATCH: &str = "67108864";
+
 /// The parts of the cargo home a build reads (not `credentials.toml`).
 const CARGO_HOME: [&str; 5] = ["bin", "registry", "git", "config.toml", "config"];
 
@@ -233,7 +243,13 @@ fn bwrap_args(copy: &Path, has_room: bool, env: &[(OsString, OsString)]) -> Vec<
         "--dev",
         "/dev",
         "--size",
-        "67108864",
+        SCRATCH,
+        "--tmpfs",
+        "/dev/shm",
+        "--remount-ro",
+        "/dev",
+        "--size",
+        SCRATCH,
         "--tmpfs",
         "/tmp",
         "--ro-bind",
@@ -304,8 +320,8 @@ mod tests {
     use super::*;
 
     /// The arguments name every namespace, an empty root with the copy
-    /// read-only and its target writable, and never the cargo home's
-    /// credentials or the host's /tmp.
+    /// read-only and its target writable, `/dev` read-only but for a small
+    /// `/dev/shm`, and never the cargo home's credentials or the host's /tmp.
     #[test]
     fn the_sandbox_starts_empty_and_mounts_only_what_it_names() {
         let copy = Path::new("/grading/work/alice");
@@ -336,6 +352,14 @@ mod tests {
             "/grading/work/alice"
         ]));
         assert!(has(&["--size", "67108864", "--tmpfs", "/tmp"]));
+        assert!(has(&["--size", "67108864", "--tmpfs", "/dev/shm"]));
+        let dev = args.iter().position(|a| a == "--dev").unwrap();
+        let shm = args.iter().position(|a| a == "/dev/shm").unwrap();
+        let read_only = args.windows(2).position(|w| w == ["--remount-ro", "/dev"]);
+        assert!(
+            read_only.is_some_and(|at| dev < at && shm < at),
+            "/dev read-only once its mounts are in it"
+        );
         assert!(!args.iter().any(|a| a.contains("credentials")));
         assert!(!has(&["--bind", "/", "/"]) && !has(&["--ro-bind", "/", "/"]));
         assert!(has(&[

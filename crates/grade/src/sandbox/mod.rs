@@ -38,6 +38,12 @@
 //!   the drawn inputs) or writes reaches a run whose output a student
 //!   sees, and what a student sees of the judging names a disagreement by
 //!   its number only (`judging/verdict.rs`, `Verdict::for_student`);
+//! * what a run may write is bounded everywhere: its build folder by
+//!   `--disk`, `/tmp` and `/dev/shm` by 64 MiB, and `/dev` is read-only;
+//!   what leaves it too: a probe kept over 64 MiB is refused, a chapter's
+//!   failure pictures past 8 MiB, and a result keeps 1000 characters of a
+//!   text and 100 flags; and whatever a student's files or output hold,
+//!   grading reads them in one pass (no scan from every match again);
 //! * everything the grader reads of a student's folder or build folder
 //!   (the handout record, the sources, the failure pictures, what a run
 //!   left) is opened beneath a folder it opened itself, with no symlink
@@ -99,6 +105,11 @@
 //! | a folder named with a line break and a forged row; files and pictures named with ESC and CR | one line everywhere, the picture refused and flagged |
 //! | an `.init_array` constructor that forges a record before `main`; a `#[global_allocator]` | the forged values are worth nothing; the allocator changes nothing |
 //! | a `#[no_mangle] main` in place of every binary's entry point; `[patch]` in the Cargo.toml; a proc-macro crate added | the link fails (two `main`s), so nothing of it runs; the Cargo files are the reference's, the macro never built; flagged |
+//! | a probe padded with 75 MiB of `include_bytes!` (kept, it was copied to the teacher's disk for every chapter, up to `--disk` each) | nothing: a probe over 64 MiB is refused unread (`build/cargo.rs`), and the exercises it judges lose their points |
+//! | gigabytes written to `/dev` (bubblewrap's own tmpfs, half the memory) or `/dev/shm` | `/dev` is read-only, `/dev/shm` and `/tmp` 64 MiB (`sandbox/bwrap.rs`); the start-up trial run checks it |
+//! | forty 4 MiB failure pictures a chapter (kept twice on the teacher's disk) | 8 MiB of them a chapter (`sandbox/outbound.rs`), the rest refused and flagged |
+//! | a 1 MiB panic message; 2000 files added, each flagged | every text of a result cut to 1000 characters, 100 flags kept (`judging/verdict.rs`): the class's report stays small |
+//! | sources of 8 MiB of `#[`, `include!(r#"` or `include!(x)` lines; tests printing 12 MiB of made-up failures | read in one pass (`class/source_paths.rs`, workbook's `progress::parse`): both were read again from every one, days and hours, and the class never finished |
 //! | a hostile slice given to `--merge` (a link, a FIFO, not a slice) | refused at once, never quoted (`class/merge.rs`); a slice itself is the teacher's own output, so whoever can write one can write the gradebook |
 
 pub mod beneath;

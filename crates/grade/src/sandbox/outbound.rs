@@ -11,6 +11,14 @@ use std::time::Duration;
 /// hundred KiB.
 pub const MAX_BYTES: u64 = 32 << 20;
 
+/// The most a chapter's failure pictures may hold together. They stay on
+/// the teacher's disk twice (the cache and the report), so without it a
+/// student's tests could leave 32 pictures of 32 MiB a chapter there: 14
+/// GiB for seven chapters, kept. A chapter has a few snapshot tests, and
+/// the largest picture of the workbook is 30 KB (its failure picture,
+/// three panels, a few hundred KB at most).
+pub const MAX_CHAPTER_BYTES: u64 = 8 << 20;
+
 /// The longest the pictures of one chapter may take to read.
 pub const MAX_TIME: Duration = Duration::from_secs(10);
 

@@ -59,6 +59,8 @@ pub fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
     student("zz-honest", 1);
     attacker(&student("d-swapper", 0), "swapper", false);
     attacker(&student("h-panicker", 1), "panicker", true);
+    attacker(&student("q-pictures", 1), "pictures", true);
+    attacker(&student("s-flood", 1), "flood", true);
 
     let record = |dir: &Path, to: &Path| {
         let at = dir.join(".raybook-handout.toml");
@@ -94,6 +96,31 @@ pub fn make_class(reference: &Path, class: &Path, places: &[(&str, String)]) {
         "ch01-frame" => Some(frame.clone()),
         _ => None,
     });
+
+    let padded = student("n-padded", 1);
+    pad(&padded.join("chapters/01-rays/src"));
+    rewrite(&padded, |id| {
+        (id == "ch01-at").then(|| PADDED_AT.to_owned())
+    });
+    let beyond = student("o-beyond", 1);
+    append(&beyond.join("chapters/01-rays/src/lib.rs"), BEYOND);
+    rewrite(&beyond, |id| {
+        (id == "ch01-at").then(|| BEYOND_AT.to_owned())
+    });
+    let verbose = student("p-verbose", 1);
+    let notes = verbose.join("chapters/01-rays/notes");
+    std::fs::create_dir_all(&notes).unwrap();
+    for i in 0..2000 {
+        std::fs::write(notes.join(format!("{i}.md")), "").unwrap();
+    }
+    rewrite(&verbose, |id| {
+        (id == "ch01-at").then(|| "        panic!(\"{}\", \"x\".repeat(1 << 20))".to_owned())
+    });
+    let slow = student("r-slow-scan", 1);
+    for (i, unit) in ["#[", "include!(r#\"", "include!(x)\n"].iter().enumerate() {
+        let text = unit.repeat((8 << 20) / unit.len());
+        std::fs::write(slow.join(format!("chapters/01-rays/src/slow{i}.rs")), text).unwrap();
+    }
 
     let early = student("j-early", 1);
     append(&early.join("chapters/01-rays/src/lib.rs"), EARLY);
@@ -244,6 +271,55 @@ unsafe impl std::alloc::GlobalAlloc for Counting {
 #[global_allocator]
 static COUNTING: Counting = Counting;
 "#;
+
+/// 75 MiB of padding in `src` (a probe of about 90 MiB, past the 64 MiB
+/// grading keeps; an honest one is about 15 MiB): five files of 15 MiB of
+/// noise (alike, the linker would keep one), each taken in by
+/// `include_bytes!` into `PAD`. (A `static` array as large makes rustc
+/// run out of its address space.)
+fn pad(src: &Path) {
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut names = Vec::new();
+    for i in 0..5 {
+        let noise: Vec<u8> = (0..(15 << 20) / 8)
+            .flat_map(|_| {
+                // xorshift64: noise that no compressor or linker merges.
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                state.to_le_bytes()
+            })
+            .collect();
+        std::fs::write(src.join(format!("pad{i}.bin")), noise).unwrap();
+        names.push(format!("include_bytes!(\"pad{i}.bin\")"));
+    }
+    let code = format!("\npub static PAD: [&[u8]; 5] = [{}];\n", names.join(", "));
+    append(&src.join("lib.rs"), &code);
+}
+
+/// Ray::at, right, reading the padding so that the linker keeps it.
+const PADDED_AT: &str = "        let _ = std::hint::black_box(&crate::PAD).len();\n        \
+                         self.origin + t * self.direction";
+
+/// Writes where a sandbox may have no bound: a file in `/dev` (bubblewrap's
+/// own tmpfs, half the machine's memory) and 65 MiB in `/dev/shm`; panics
+/// if either was written whole.
+const BEYOND: &str = r#"
+fn write_beyond() {
+    use std::io::Write;
+    let chunk = vec![7u8; 1 << 20];
+    let shm = std::fs::File::create("/dev/shm/hog")
+        .is_ok_and(|mut f| (0..65).all(|_| f.write_all(&chunk).is_ok()));
+    let _ = std::fs::remove_file("/dev/shm/hog");
+    let dev = std::fs::write("/dev/hog", b"x").is_ok();
+    assert!(!shm && !dev, "written beyond the bounds: /dev/shm {shm}, /dev {dev}");
+}
+"#;
+
+/// Ray::at, right, after one try (a process) at writing beyond the bounds.
+const BEYOND_AT: &str = "        static ONCE: std::sync::Once = std::sync::Once::new();\n        \
+                         ONCE.call_once(crate::write_beyond);\n        \
+                         self.origin + t * self.direction";
 
 /// An entry point of its own in place of every binary's `main`.
 const ENTRY: &str = r#"

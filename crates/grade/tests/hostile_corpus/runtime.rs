@@ -11,7 +11,8 @@ use std::time::{Duration, Instant};
 /// Its own target folder, as the sandbox shows it.
 const TARGET: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../target");
 
-/// The attacks of `@KIND@`: "runtime", "hogs", "swapper" or "panicker".
+/// The attacks of `@KIND@`: "runtime", "hogs", "swapper", "panicker",
+/// "pictures" or "flood".
 pub fn attack() {
     match "@KIND@" {
         "runtime" => {
@@ -32,8 +33,15 @@ pub fn attack() {
         }
         "panicker" if in_probe() => {
             let args: Vec<String> = std::env::args().collect();
+            // Its arguments in a name that a look through its build
+            // folder would report.
+            let seed = args.iter().skip_while(|a| *a != "--seed").nth(1);
+            let name = format!("{TARGET}/seed-{}", seed.map_or("", |s| s.as_str()));
+            let _ = std::os::unix::fs::symlink("nowhere", name);
             panic!("the probe's arguments: {args:?}");
         }
+        "pictures" if !in_probe() => many_pictures(),
+        "flood" if !in_probe() => made_up_failures(),
         "panicker" => {
             let dir = format!("{TARGET}/snapshot-failures/01-rays");
             let _ = std::fs::create_dir_all(&dir);
@@ -138,6 +146,30 @@ fn leak_pictures() {
     let _ = std::fs::create_dir_all(&dir);
     let _ = std::os::unix::fs::symlink("@SECRET@", format!("{dir}/leak.diff.png"));
     let _ = quiet(Command::new("mkfifo").arg(format!("{dir}/block.diff.png"))).status();
+}
+
+/// Forty failure pictures of 4 MiB each (160 MiB, more than the 32 the
+/// grader takes): what is kept stays on the teacher's disk.
+fn many_pictures() {
+    let dir = format!("{TARGET}/snapshot-failures/01-rays");
+    let _ = std::fs::create_dir_all(&dir);
+    let picture = vec![7u8; 4 << 20];
+    for i in 0..40 {
+        let _ = std::fs::write(format!("{dir}/{i:02}.diff.png"), &picture);
+    }
+}
+
+/// 12 MiB of made-up failures, each with its panic, past libtest's
+/// capture: what the grader reads of a test run, a quarter of a million
+/// names.
+fn made_up_failures() {
+    let mut text = String::new();
+    let mut i = 0;
+    while text.len() < 12 << 20 {
+        text += &format!("thread 't{i}' panicked at x:1:1:\nm\ntest f{i} ... FAILED\n");
+        i += 1;
+    }
+    let _ = std::io::stdout().write_all(text.as_bytes());
 }
 
 /// Six children that each grow until their own limit (`tail` of an
