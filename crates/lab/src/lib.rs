@@ -34,8 +34,11 @@
 //! connection with no cap on their number, a body drained with one buffer
 //! of whatever length it announces, and an accept loop that ends for good
 //! the first time accept fails (no descriptor left). A local user could stop
-//! the lab or exhaust its memory. [`http`] reads one request per connection
-//! within stated limits and answers it, in about 300 lines a student reads.
+//! the lab or exhaust its memory. rouille is built on tiny_http and shares
+//! all of it; hyper bounds each of these, but needs an async runtime (tokio),
+//! tens of seconds of building before a student's first page. [`http`]
+//! reads one request per connection within stated limits and answers it,
+//! in about 300 lines a student reads.
 //!
 //! # Safety
 //!
