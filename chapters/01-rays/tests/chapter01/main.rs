@@ -195,6 +195,34 @@ fn the_image_corners_are_the_image_planes_corners() {
     );
 }
 
+/// The direction is forward + u·right + v·up wherever the eye is. Through
+/// P − eye it is not: P = eye + forward + u·right + v·up is rounded to the
+/// precision of the eye's coordinates (f32 keeps 24 bits: 0.001 near 10⁴),
+/// and the subtraction keeps that error.
+#[test]
+fn the_direction_does_not_depend_on_where_the_eye_is() {
+    let camera = Camera {
+        eye: Vec3::new(10000.0, -20000.0, 5000.0),
+        ..hand_made()
+    };
+    let (w, h) = (camera.half_width, camera.half_height);
+    for (px, py) in [(0.5, 0.5), (17.25, 133.75), (301.5, 7.5), (319.5, 199.5)] {
+        let (u, v) = ((2.0 * px / 320.0 - 1.0) * w, (1.0 - 2.0 * py / 200.0) * h);
+        let expected = (camera.forward + u * camera.right + v * camera.up).normalize();
+        let d = camera.ray_through(px, py).direction;
+        assert!(
+            (d - expected).length() < 1e-5,
+            "with the eye at {}, ray_through({px}, {py}) goes along {d}, {} away from \
+             forward + u·right + v·up = {expected}: was the direction computed as P − eye? \
+             P = eye + forward + u·right + v·up is rounded to the eye's precision (0.001 for \
+             coordinates near 10⁴), and P − eye keeps that error: take the direction as \
+             forward + u·right + v·up itself",
+            camera.eye,
+            (d - expected).length()
+        );
+    }
+}
+
 #[test]
 fn the_top_and_bottom_edges_span_the_vertical_field_of_view() {
     let s = scene();

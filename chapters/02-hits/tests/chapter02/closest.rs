@@ -100,3 +100,58 @@ pub(crate) fn a_later_object_replaces_the_hit_only_if_it_is_nearer() {
         asked.get(1).map(|(_, t_max)| *t_max)
     );
 }
+
+/// A fake `intersect` for spheres on the x axis, met by a ray from the
+/// origin along +x at t = x − 1 when that t is inside the range asked
+/// about; it records each call's t_max in `asked`.
+fn recording(
+    asked: &std::cell::RefCell<Vec<f32>>,
+) -> impl Fn(&Shape, &Ray, f32, f32) -> Option<f32> + '_ {
+    move |shape, _, t_min, t_max| {
+        let Shape::Sphere { center, .. } = shape else {
+            unreachable!()
+        };
+        asked.borrow_mut().push(t_max);
+        let t = center.x - 1.0;
+        (t_min < t && t < t_max).then_some(t)
+    }
+}
+
+#[test]
+fn two_objects_met_at_the_same_t_the_first_listed_wins() {
+    // Objects 1 and 2 are the same sphere, both met at t = 4.
+    let ray = Ray::new(Vec3::ZERO, Vec3::X);
+    let objects = [sphere(10.0), sphere(5.0), sphere(5.0), sphere(15.0)];
+    let asked = std::cell::RefCell::new(Vec::new());
+    let hit = closest_hit_by(recording(&asked), &objects, &ray, 0.0, INF).expect("a hit");
+    assert_eq!(
+        (hit.object, hit.t),
+        (1, 4.0),
+        "objects 1 and 2 are both met at t = 4, the nearest: of two objects hit at the \
+         same t, the first listed wins (README, question (3)). A later hit may replace \
+         the one kept only if it is strictly nearer: t < best, not t <= best"
+    );
+}
+
+#[test]
+fn each_object_is_asked_only_up_to_the_nearest_t_so_far() {
+    // Met at t = 9, 4, 14, 2 and 6, asked within (0, 20).
+    let ray = Ray::new(Vec3::ZERO, Vec3::X);
+    let objects = [10.0, 5.0, 15.0, 3.0, 7.0].map(sphere);
+    let asked = std::cell::RefCell::new(Vec::new());
+    let hit = closest_hit_by(recording(&asked), &objects, &ray, 0.0, 20.0).expect("a hit");
+    assert_eq!(
+        (hit.object, hit.t),
+        (3, 2.0),
+        "object 3, met at t = 2, is the nearest"
+    );
+    assert_eq!(
+        asked.into_inner(),
+        [20.0, 9.0, 4.0, 4.0, 2.0],
+        "the t_max each object was asked with, in list order: the first is asked up to \
+         t_max = 20, each next one only up to the nearest t found so far (README, question \
+         (1)). A bound that does not shrink (every object asked up to t_max) makes an \
+         object behind the nearest one cost a whole test (the same shrinking bound lets \
+         chapter 8's hierarchy skip whole boxes behind the nearest hit)"
+    );
+}

@@ -443,3 +443,5 @@ mod listings;
 mod offset;
 /// The ray tree names the object that blocks a shadow ray.
 mod ray_tree;
+/// t_max from the shadow ray's own origin, not from the hit point.
+mod reach;
