@@ -85,8 +85,7 @@ fn missed(ray: &Value) -> String {
     format!(
         "the ray at depth {} leaves {} along {} and hits nothing; between two facing mirrors \
          every mirror ray hits the other mirror (here straight back, along (0, 0, 1)): does \
-         reflect reverse the part of d along n and keep the rest, d − 2(d·n)n, and does the \
-         mirror ray start at the hit point?",
+         reflect reverse the part of d along n and keep the rest, d − 2(d·n)n?",
         ray["depth"], ray["origin"], ray["direction"]
     )
 }
