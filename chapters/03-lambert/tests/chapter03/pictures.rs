@@ -53,9 +53,18 @@ fn colours_are_clamped_when_written() {
     let image = render(&scene);
     assert!(
         image.get(20, 20).x > 1.0,
-        "linear values may exceed 1 while shading"
+        "pixel (20, 20), lit by a light of intensity 10⁴, is {} in the picture's linear \
+         light: its red should be far above 1. Linear values may exceed 1 while shading: \
+         lambert and direct_light return what they compute, unclamped, and only writing the \
+         pixel to 8 bits (Image::to_rgb8) clamps it to [0, 1]",
+        image.get(20, 20)
     );
-    assert_eq!(image.to_rgb8().get_pixel(20, 20).0, [255, 255, 255]);
+    assert_eq!(
+        image.to_rgb8().get_pixel(20, 20).0,
+        [255, 255, 255],
+        "pixel (20, 20), {} in linear light, is clamped to 1 when written: white",
+        image.get(20, 20)
+    );
 }
 
 /// The tests whose messages say more than a picture's count of pixels: a

@@ -32,8 +32,9 @@ pub(crate) fn spot_factor_is_one_inside_zero_outside_and_smooth_between() {
     let quarter = at(angle);
     assert!(
         (quarter - 0.15625).abs() < 1e-3,
-        "at s = 1/4 (of the way between the cosines) the smooth step 3s² − 2s³ is \
-         0.15625, got {quarter} (0.25: a linear ramp; about 0.10: s measured in degrees \
+        "at s = 1/4 (of the way between the cosines, {angle:.2}°) the smooth step \
+         3s² − 2s³ is 0.15625, got {quarter} (0.25: a linear ramp in the cosine; about 0.198: \
+         a linear ramp in degrees; about 0.10: the smooth step of s measured in degrees \
          instead of cosines)"
     );
 }

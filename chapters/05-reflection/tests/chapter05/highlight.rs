@@ -1,7 +1,7 @@
 //! The highlight: brightest at the light's mirror image, falling off with the
 //! halfway angle, none on a matte surface.
 
-use ch05_reflection::toolkit::{Color, Vec3};
+use ch05_reflection::toolkit::{Color, Scene, Vec3};
 use ch05_reflection::{Incoming, highlight};
 
 use super::{arriving, close, floor, surface};
@@ -14,6 +14,20 @@ fn light_from(direction: Vec3) -> Incoming {
         irradiance: Color::new(2.0, 1.0, 0.5),
         casts_shadows: false,
     }
+}
+
+/// When `found` is `want` × the floor's albedo, channel by channel: what
+/// that says. The highlight is the light's colour, as a shiny coat on top
+/// of the surface reflects it; the albedo belongs to Lambert's term only.
+fn tinted(scene: &Scene, found: Color, want: Color) -> Option<String> {
+    let albedo = scene.materials[0].color;
+    close(found, want * albedo).then(|| {
+        format!(
+            ", which is {want} × the floor's albedo {albedo}: the highlight is the light's \
+             colour, not tinted by the albedo (only Lambert's term has the albedo; here the \
+             specular weight is 0.5 too, so specular applied twice gives the same numbers)"
+        )
+    })
 }
 
 #[test]
@@ -35,7 +49,8 @@ pub(crate) fn the_highlight_is_brightest_where_the_lights_mirror_image_is_seen()
         assert!(
             close(found, peak),
             "{case}: the halfway vector of the directions to the light and to the eye is the \
-             normal, so the highlight is specular × irradiance = {peak}; found {found}"
+             normal, so the highlight is specular × irradiance = {peak}; found {found}{}",
+            tinted(&scene, found, peak).unwrap_or_default()
         );
     }
 }
@@ -51,7 +66,8 @@ pub(crate) fn the_highlight_falls_off_with_the_halfway_angle_to_the_power_shinin
     assert!(
         close(found, expected),
         "eye above, light 60° off the normal: h lies 30° from n, so the highlight is \
-         specular × irradiance × cos(30°)^8 = {expected}; found {found} (is h a unit vector?)"
+         specular × irradiance × cos(30°)^8 = {expected}; found {found}{}",
+        tinted(&scene, found, expected).unwrap_or(" (is h a unit vector?)".to_string())
     );
 }
 

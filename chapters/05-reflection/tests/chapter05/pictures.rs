@@ -52,6 +52,16 @@ fn after(bounces: u32) -> Color {
         .fold(Color::ZERO, |sum, c| sum + c)
 }
 
+/// The pixel after `bounces` bounces when each mirror ray is weighted by
+/// its path's weight ρᵏ (k its depth) instead of its own ρ: working back
+/// from the deepest ray, c = 0.2 + ρᵏ × (what the ray at depth k brought).
+fn after_by_path(bounces: u32) -> Color {
+    let reflectance = Color::new(0.5, 0.25, 0.0);
+    (1..=bounces).rev().fold(Color::splat(0.2), |seen, k| {
+        Color::splat(0.2) + reflectance.powf(k as f32) * seen
+    })
+}
+
 /// "1 bounce", "2 bounces": `n` of `thing`, in words that read.
 fn count(n: u32, thing: &str) -> String {
     if n == 1 {
@@ -80,6 +90,10 @@ fn max_depth_n_follows_exactly_n_bounces() {
                 " That is one bounce too many."
             } else if max_depth > 0 && close(found, after(max_depth - 1)) {
                 " That is one bounce too few."
+            } else if close(found, after_by_path(max_depth)) {
+                " That is each mirror ray weighted by its path's weight (ρ at depth 1, ρ² at \
+                 depth 2, …) instead of its own ρ: a ray brings back its own weight × what it \
+                 sees."
             } else {
                 ""
             };

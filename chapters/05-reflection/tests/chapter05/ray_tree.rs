@@ -69,6 +69,27 @@ fn first(c: &Value) -> f64 {
     c[0].as_f64().unwrap()
 }
 
+/// The object `ray` hits; between the facing mirrors every ray hits one,
+/// and a mirror ray that hits nothing was sent the wrong way.
+#[track_caller]
+fn hit_object(ray: &Value) -> u64 {
+    match ray["hit"]["object"].as_u64() {
+        Some(object) => object,
+        None => panic!("{}", missed(ray)),
+    }
+}
+
+/// Why a ray between the facing mirrors hit nothing: the mirror ray at
+/// depth 1 goes from (0, 0, −1) straight back, along +z.
+fn missed(ray: &Value) -> String {
+    format!(
+        "the ray at depth {} leaves {} along {} and hits nothing; between two facing mirrors \
+         every mirror ray hits the other mirror (here straight back, along (0, 0, 1)): does \
+         reflect reverse the part of d along n and keep the rest, d − 2(d·n)n?",
+        ray["depth"], ray["origin"], ray["direction"]
+    )
+}
+
 #[test]
 fn mirror_rays_bounce_with_multiplying_weights_until_the_maximum_depth() {
     let tree = tree();
@@ -76,7 +97,7 @@ fn mirror_rays_bounce_with_multiplying_weights_until_the_maximum_depth() {
     let mut ray = &tree["primary"];
     let mut objects = Vec::new();
     for depth in 1..=4 {
-        objects.push(ray["hit"]["object"].as_u64().unwrap());
+        objects.push(hit_object(ray));
         let secondary = ray["secondary"].as_array().unwrap();
         assert_eq!(secondary.len(), 1, "one mirror ray at depth {depth}");
         ray = &secondary[0];
@@ -95,16 +116,40 @@ fn mirror_rays_bounce_with_multiplying_weights_until_the_maximum_depth() {
 fn each_ray_brings_back_its_local_light_plus_half_the_next() {
     let tree = tree();
     // 0.2 at depth 3; 0.2 + 0.5 · 0.2 = 0.3 at depth 2; 0.35; 0.375.
+    // Weighted by the path's weight 0.5^(depth + 1) instead of the ray's own
+    // 0.5: 0.2 + 0.125 · 0.2 = 0.225 at depth 2; 0.25625; 0.328125.
     let mut ray = &tree["primary"];
-    for expected in [0.375, 0.35, 0.3, 0.2] {
+    for (depth, expected, by_path) in [
+        (0, 0.375, 0.328125),
+        (1, 0.35, 0.25625),
+        (2, 0.3, 0.225),
+        (3, 0.2, 0.2),
+    ] {
+        let found = first(&ray["color"]);
+        let next = &ray["secondary"][0];
+        let hint = if depth < 3 && next["traced"] == true && next["hit"].is_null() {
+            format!(" ({})", missed(next))
+        } else if (found - by_path).abs() < 1e-5 {
+            " (that is each mirror ray weighted by its path's weight, 0.5 per bounce so far, \
+             instead of its own 0.5: a ray brings back its own weight × what it sees)"
+                .to_string()
+        } else {
+            String::new()
+        };
         assert!(
-            (first(&ray["color"]) - expected).abs() < 1e-5,
-            "{}",
+            (found - expected).abs() < 1e-5,
+            "the ray at depth {depth} brings back its local light 0.2 plus 0.5 × what its \
+             mirror ray brings back: red {expected}, found {found} in {}{hint}",
             ray["color"]
         );
-        assert!((first(&ray["local"]) - 0.2).abs() < 1e-6);
+        assert!(
+            (first(&ray["local"]) - 0.2).abs() < 1e-6,
+            "the ray at depth {depth}: its local light is the mirror's albedo 0.2 × ambient 1 \
+             = 0.2, found {}",
+            ray["local"]
+        );
         assert_eq!(ray["lights"][0]["status"], "ambient");
-        ray = &ray["secondary"][0];
+        ray = next;
     }
 }
 
@@ -113,8 +158,18 @@ fn max_depth_on_the_command_line_replaces_the_scenes() {
     let tree = tree_with(&["--max-depth", "1"]);
     assert_eq!(tree["tracer"]["max_depth"], 1);
     let first_bounce = &tree["primary"]["secondary"][0];
-    assert_eq!(first_bounce["traced"], true);
+    assert_eq!(
+        first_bounce["traced"], true,
+        "--max-depth 1: the first bounce (depth 1) is traced"
+    );
+    hit_object(first_bounce);
     let second_bounce = &first_bounce["secondary"][0];
-    assert_eq!(second_bounce["depth"], 2);
-    assert_eq!(second_bounce["end"], "max_depth");
+    assert_eq!(
+        second_bounce["depth"], 2,
+        "--max-depth 1: the first bounce's mirror ray is offered at depth 2"
+    );
+    assert_eq!(
+        second_bounce["end"], "max_depth",
+        "--max-depth 1: the mirror ray at depth 2 is one bounce too deep and ends there"
+    );
 }

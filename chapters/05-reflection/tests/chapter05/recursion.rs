@@ -253,10 +253,25 @@ pub(crate) fn trace_adds_the_local_light_and_what_the_secondary_rays_bring_back(
     let found = trace(&probe, &scene, &scene.objects[..], &down, path, &mut stats);
     assert_offered(&probe.asked(), path, &[MIRROR_WEIGHT, GLASS_WEIGHT]);
     let expected = probe.local + MIRROR_WEIGHT * background + GLASS_WEIGHT * background;
+    // Each ray weighted by its path's weight (0.5 × its own) instead of its own.
+    let by_path = probe.local + path.weight * (MIRROR_WEIGHT + GLASS_WEIGHT) * background;
+    let hint = if close(found, by_path) {
+        format!(
+            " = the local light plus the rays weighted by their path's weight {} × their own: \
+             a secondary ray brings back its own weight × what it sees; the path's weight is \
+             only for may_trace (the levels above multiply in their own weights on the way \
+             back)",
+            path.weight
+        )
+    } else {
+        String::new()
+    };
     assert!(
         close(found, expected),
-        "at a hit: the local light {} plus what the secondary rays bring back ({} and {}) = \
-         {expected}; found {found}",
+        "at a hit on a path of weight {}: the local light {} plus what the secondary rays \
+         bring back, each its own weight × the background ({} and {}) = {expected}; found \
+         {found}{hint}",
+        path.weight,
         probe.local,
         MIRROR_WEIGHT * background,
         GLASS_WEIGHT * background

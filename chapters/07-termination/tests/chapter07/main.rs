@@ -8,6 +8,7 @@ use ch07_termination::workbench::snapshot::{Precise, assert_image_beside};
 use ch07_termination::{
     CHAPTER, Glass, Mirrors, Termination, below_threshold, render_terminated, render_whitted,
 };
+use test_support::pictures::assert_same_pixels;
 
 fn mirrors(reflectance: f32) -> Scene {
     mirrors_of(Vec3::splat(reflectance))
@@ -245,14 +246,24 @@ fn a_threshold_of_zero_changes_nothing_a_high_one_cuts_reflections() {
         mirrors: Mirrors { max_depth: 6 },
     };
     let (depth_only_image, depth_only) = render_whitted(&glass, &scene, &scene.objects[..], || {});
-    assert_eq!(all_image.pixels, depth_only_image.pixels);
+    assert_same_pixels(
+        &all_image,
+        &depth_only_image,
+        "max_depth 6 and min_weight 0 against chapter 6's tracer with max_depth 6",
+        "Few pixels off by little, where mirrors or glass are seen, is the share of the \
+         deepest bounce: the depth limit ends paths one bounce early or late (max_depth 6 \
+         traces bounces 1 to 6: a ray at depth 6 goes on, one at depth 7 ends; depth > \
+         max_depth, not >=). Many pixels off by much is the threshold: no weight is below 0",
+    );
     assert_eq!(
         (all.reflection, all.refraction, all.shadow),
         (
             depth_only.reflection,
             depth_only.refraction,
             depth_only.shadow
-        )
+        ),
+        "(reflection, refraction, shadow) rays with min_weight 0 against chapter 6's tracer: \
+         with a threshold of zero only the depth ends a path, at the same bounce as chapter 6"
     );
 
     let (_, cut) = render_terminated(
@@ -263,8 +274,18 @@ fn a_threshold_of_zero_changes_nothing_a_high_one_cuts_reflections() {
         },
         || {},
     );
-    assert!(cut.ended_threshold > 0);
-    assert!(cut.reflection < all.reflection);
+    assert!(
+        cut.ended_threshold > 0,
+        "min_weight 0.5 ends the paths whose weight falls below 0.5 (a mirror of reflectance \
+         below 0.5 does it at the first bounce): count each in stats.ended_threshold; found 0"
+    );
+    assert!(
+        cut.reflection < all.reflection,
+        "min_weight 0.5 cuts paths, so fewer mirror rays are traced than with min_weight 0: \
+         found {} with 0.5 and {} with 0",
+        cut.reflection,
+        all.reflection
+    );
 }
 
 #[test]

@@ -59,13 +59,34 @@ fn paths_end_at_the_maximum_depth_before_the_weight_threshold() {
     let mut ends = Vec::new();
     for ray in rays(&tree["primary"]) {
         if ray["depth"] == 2 {
-            assert_eq!(ray["traced"], false);
+            assert_eq!(
+                ray["traced"], false,
+                "--max-depth 1: a ray at depth 2 is one bounce too deep and is not traced"
+            );
             ends.push(ray["end"].as_str().unwrap().to_string());
         }
-        assert!(ray["depth"].as_u64().unwrap() <= 2);
+        assert!(
+            ray["depth"].as_u64().unwrap() <= 2,
+            "--max-depth 1: no ray deeper than 2 is even offered, found one at depth {}",
+            ray["depth"]
+        );
     }
-    assert!(!ends.is_empty());
-    assert!(ends.iter().all(|e| e == "max_depth"), "{ends:?}");
+    let first_bounce: Vec<&str> = (rays(&tree["primary"]).into_iter())
+        .filter(|ray| ray["depth"] == 1)
+        .map(|ray| ray["end"].as_str().unwrap_or("nothing"))
+        .collect();
+    assert!(
+        !ends.is_empty(),
+        "--max-depth 1 and a glass sphere: the first bounce (depth 1) is traced, so its \
+         mirror and refracted rays are offered at depth 2 and end there by max_depth; but the \
+         tree has no ray at depth 2, and the rays at depth 1 end by {first_bounce:?}: does \
+         may_trace end a path at depth == max_depth (>= instead of >)?"
+    );
+    assert!(
+        ends.iter().all(|e| e == "max_depth"),
+        "--max-depth 1 --min-weight 0: every ray at depth 2 ends by max_depth, the depth being \
+         asked before the weight; they end by {ends:?}"
+    );
 }
 
 #[test]
