@@ -79,7 +79,10 @@ fn frame(rng: &mut Rng) -> Option<Case> {
 }
 
 /// `ray_through` of a camera made field by field (its frame not from the
-/// student's `Camera::new`), at any point of the image.
+/// student's `Camera::new`), at any point of the image. For an even width
+/// the eye is up to 10⁴ from the origin, where a direction taken as P − eye
+/// keeps P's rounding (about 10⁻³): the direction must not depend on where
+/// the eye is.
 fn ray_through(rng: &mut Rng) -> Option<Case> {
     let forward = unit(rng);
     let hint = unit(rng);
@@ -89,8 +92,9 @@ fn ray_through(rng: &mut Rng) -> Option<Case> {
     let right = forward.cross(hint).normalize();
     let up = right.cross(forward);
     let (width, height) = (whole(rng, 8, 1200), whole(rng, 8, 1200));
+    let far = if width % 2 == 0 { 1000.0 } else { 1.0 };
     let camera = Camera {
-        eye: point(rng, 10.0),
+        eye: point(rng, 10.0) * far,
         right,
         up,
         forward,

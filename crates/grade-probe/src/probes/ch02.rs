@@ -300,7 +300,12 @@ fn triangle(rng: &mut Rng) -> Option<Case> {
 
 /// The closest of a few spheres, planes and triangles, found with the
 /// tracer's own tests (`ch02_hits::intersect`, none of the student's
-/// intersection exercises).
+/// intersection exercises). The value holds the hit and, in order, the
+/// range (t_min, t_max) each object was asked about: t_min as given, and
+/// t_max shrinking to the nearest t so far (README question 1; a bound
+/// that stays finds the same hit). One case
+/// in four lists one object a second time, last: met at the same t as the
+/// first, which must win the tie (`t < best`, not `t <= best`).
 fn closest(rng: &mut Rng) -> Option<Case> {
     let count = whole(rng, 0, 6);
     let objects: Vec<Object> = (0..count)
@@ -335,7 +340,21 @@ fn closest(rng: &mut Rng) -> Option<Case> {
     if ts.windows(2).any(|w| w[1] - w[0] < 1e-3) {
         return None;
     }
-    let hit = ch02_hits::closest_hit_by(ch02_hits::intersect, &objects, &ray, range.0, range.1);
+    let mut objects = objects;
+    if count > 0 && chance(rng, 0.25) {
+        let twice = whole(rng, 0, count - 1) as usize;
+        let copy = Object {
+            material: objects.len(),
+            ..objects[twice].clone()
+        };
+        objects.push(copy);
+    }
+    let asked = std::cell::RefCell::new(Vec::new());
+    let recording = |shape: &Shape, ray: &Ray, t_min: f32, t_max: f32| {
+        asked.borrow_mut().push([t_min, t_max]);
+        ch02_hits::intersect(shape, ray, t_min, t_max)
+    };
+    let hit = ch02_hits::closest_hit_by(recording, &objects, &ray, range.0, range.1);
     let shapes: Vec<String> = objects.iter().map(|o| format!("{:?}", o.shape)).collect();
     Some(Case {
         input: format!(
@@ -345,9 +364,12 @@ fn closest(rng: &mut Rng) -> Option<Case> {
             range.0,
             range.1
         ),
-        value: hit.map_or(Value::Null, |h: Hit| {
-            json!([h.t, h.object, v3(h.point), v3(h.normal)])
-        }),
+        value: json!([
+            hit.map_or(Value::Null, |h: Hit| {
+                json!([h.t, h.object, v3(h.point), v3(h.normal)])
+            }),
+            asked.into_inner(),
+        ]),
     })
 }
 
